@@ -1,0 +1,11 @@
+// robowire/core.hpp - every core header.
+#pragma once
+
+#include "core/advertising.hpp"
+#include "core/bits.hpp"
+#include "core/bytes.hpp"
+#include "core/endian.hpp"
+#include "core/result.hpp"
+#include "core/table.hpp"
+#include "core/text.hpp"
+#include "core/uuid.hpp"

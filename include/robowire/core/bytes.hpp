@@ -1,0 +1,143 @@
+// robowire/core/bytes.hpp - bytes<N>: fixed-capacity byte buffer (no heap),
+// and hex formatting / parsing into caller-owned buffers.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <initializer_list>
+#include <span>
+#include <string_view>
+
+#include "result.hpp"
+
+namespace robowire {
+
+// Up to N bytes, stored inline. Unused capacity is always zero, so the default
+// comparison compares exactly the used bytes.
+template <std::size_t N>
+class bytes {
+public:
+    using value_type = std::uint8_t;
+    using iterator = std::uint8_t*;
+    using const_iterator = const std::uint8_t*;
+
+    constexpr bytes() noexcept = default;
+    // Precondition: init.size() <= N (excess is dropped).
+    constexpr bytes(std::initializer_list<std::uint8_t> init) noexcept { append(std::span(init.begin(), init.size())); }
+
+    // A buffer of `n` zero bytes (n clamped to N).
+    static constexpr bytes zeros(std::size_t n) noexcept {
+        bytes b;
+        b.size_ = n < N ? n : N;
+        return b;
+    }
+    // Copy of `src`; capacity_exceeded if it does not fit.
+    static constexpr result<bytes> from(std::span<const std::uint8_t> src) noexcept {
+        bytes b;
+        if (!b.append(src)) return fail(errc::capacity_exceeded, N);
+        return b;
+    }
+
+    static constexpr std::size_t capacity() noexcept { return N; }
+    constexpr std::size_t size() const noexcept { return size_; }
+    constexpr bool empty() const noexcept { return size_ == 0; }
+    constexpr std::uint8_t* data() noexcept { return data_.data(); }
+    constexpr const std::uint8_t* data() const noexcept { return data_.data(); }
+    constexpr iterator begin() noexcept { return data_.data(); }
+    constexpr iterator end() noexcept { return data_.data() + size_; }
+    constexpr const_iterator begin() const noexcept { return data_.data(); }
+    constexpr const_iterator end() const noexcept { return data_.data() + size_; }
+    // Precondition: i < size().
+    constexpr std::uint8_t& operator[](std::size_t i) noexcept { return data_[i]; }
+    constexpr const std::uint8_t& operator[](std::size_t i) const noexcept { return data_[i]; }
+
+    constexpr std::span<std::uint8_t> span() noexcept { return {data_.data(), size_}; }
+    constexpr std::span<const std::uint8_t> span() const noexcept { return {data_.data(), size_}; }
+
+    // Appends one byte; false (and no change) when full.
+    constexpr bool push_back(std::uint8_t b) noexcept {
+        if (size_ == N) return false;
+        data_[size_++] = b;
+        return true;
+    }
+    // Appends all of src; false (and no change) when it does not fit.
+    constexpr bool append(std::span<const std::uint8_t> src) noexcept {
+        if (src.size() > N - size_) return false;
+        for (auto b : src) data_[size_++] = b;
+        return true;
+    }
+    // Sets the size; new bytes are zero. Precondition: n <= N.
+    constexpr void resize(std::size_t n) noexcept {
+        if (n > N) n = N;
+        for (std::size_t i = n; i < size_; ++i) data_[i] = 0;
+        size_ = n;
+    }
+    constexpr void clear() noexcept { resize(0); }
+
+    friend constexpr bool operator==(const bytes& a, const bytes& b) noexcept {
+        return a.size_ == b.size_ && std::equal(a.begin(), a.end(), b.begin());
+    }
+    friend constexpr bool operator==(const bytes& a, std::span<const std::uint8_t> b) noexcept {
+        return a.size_ == b.size() && std::equal(a.begin(), a.end(), b.begin());
+    }
+
+private:
+    std::array<std::uint8_t, N> data_{};
+    std::size_t size_ = 0;
+};
+
+// Equality of two byte spans.
+[[nodiscard]] constexpr bool equal_bytes(std::span<const std::uint8_t> a, std::span<const std::uint8_t> b) noexcept {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
+}
+
+// Characters to_hex writes for n bytes (with a separator: 3n - 1, else 2n).
+[[nodiscard]] constexpr std::size_t hex_size(std::size_t n, char separator = ' ') noexcept {
+    if (n == 0) return 0;
+    return separator ? 3 * n - 1 : 2 * n;
+}
+
+// Writes `in` as upper-case hex ("01 5C FF") into out; returns the number of
+// characters written (no terminator) or buffer_too_small.
+[[nodiscard]] constexpr result<std::size_t> to_hex(std::span<const std::uint8_t> in, std::span<char> out,
+                                                   char separator = ' ') noexcept {
+    constexpr std::string_view digits = "0123456789ABCDEF";
+    const std::size_t need = hex_size(in.size(), separator);
+    if (need > out.size()) return fail(errc::buffer_too_small, need);
+    std::size_t o = 0;
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        if (i && separator) out[o++] = separator;
+        out[o++] = digits[in[i] >> 4];
+        out[o++] = digits[in[i] & 0x0F];
+    }
+    return o;
+}
+
+// Parses hex in the usual spellings: "01 5C", "015C", "0x01,0x5C", "01-5C",
+// "01:5C". Error offsets are character positions in `text`.
+template <std::size_t N>
+[[nodiscard]] constexpr result<bytes<N>> parse_hex(std::string_view text) noexcept {
+    auto nibble = [](char c) -> int {
+        if (c >= '0' && c <= '9') return c - '0';
+        if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+        if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+        return -1;
+    };
+    bytes<N> out;
+    std::size_t i = 0;
+    while (i < text.size()) {
+        const char c = text[i];
+        if (c == ' ' || c == ',' || c == '-' || c == ':' || c == '\t' || c == '\n' || c == '\r') { ++i; continue; }
+        if (c == '0' && i + 1 < text.size() && (text[i + 1] == 'x' || text[i + 1] == 'X')) { i += 2; continue; }
+        const int hi = nibble(c);
+        if (hi < 0) return fail(errc::value_out_of_range, i);
+        if (i + 1 >= text.size() || nibble(text[i + 1]) < 0) return fail(errc::bad_length, i);
+        if (!out.push_back(static_cast<std::uint8_t>(hi * 16 + nibble(text[i + 1])))) return fail(errc::capacity_exceeded, i);
+        i += 2;
+    }
+    return out;
+}
+
+}  // namespace robowire

@@ -1,0 +1,55 @@
+// robowire/core/endian.hpp - little-endian loads and stores on byte spans.
+// Byte-by-byte and constexpr: alignment-safe, usable in static_assert.
+#pragma once
+
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <type_traits>
+
+namespace robowire {
+
+namespace detail {
+template <class T>
+inline constexpr bool is_wire_scalar_v =
+    std::is_same_v<T, std::uint8_t> || std::is_same_v<T, std::int8_t> || std::is_same_v<T, std::uint16_t> ||
+    std::is_same_v<T, std::int16_t> || std::is_same_v<T, std::uint32_t> || std::is_same_v<T, std::int32_t> ||
+    std::is_same_v<T, float>;
+
+template <std::size_t N> struct uint_of_size;
+template <> struct uint_of_size<1> { using type = std::uint8_t; };
+template <> struct uint_of_size<2> { using type = std::uint16_t; };
+template <> struct uint_of_size<4> { using type = std::uint32_t; };
+}  // namespace detail
+
+// Reads a T (u8, i8, u16, i16, u32, i32, f32) stored little-endian at p[0..sizeof(T)).
+template <class T>
+[[nodiscard]] constexpr T load_le(const std::uint8_t* p) noexcept {
+    static_assert(detail::is_wire_scalar_v<T>, "load_le: unsupported type");
+    using U = typename detail::uint_of_size<sizeof(T)>::type;
+    U u = 0;
+    for (std::size_t i = 0; i < sizeof(T); ++i) u = static_cast<U>(u | static_cast<U>(static_cast<U>(p[i]) << (8 * i)));
+    return std::bit_cast<T>(u);
+}
+
+// Writes v little-endian to p[0..sizeof(T)).
+template <class T>
+constexpr void store_le(std::uint8_t* p, T v) noexcept {
+    static_assert(detail::is_wire_scalar_v<T>, "store_le: unsupported type");
+    using U = typename detail::uint_of_size<sizeof(T)>::type;
+    const U u = std::bit_cast<U>(v);
+    for (std::size_t i = 0; i < sizeof(T); ++i) p[i] = static_cast<std::uint8_t>(u >> (8 * i));
+}
+
+// Span forms. Precondition: offset + sizeof(T) <= bytes.size().
+template <class T>
+[[nodiscard]] constexpr T load_le(std::span<const std::uint8_t> bytes, std::size_t offset) noexcept {
+    return load_le<T>(bytes.data() + offset);
+}
+template <class T>
+constexpr void store_le(std::span<std::uint8_t> bytes, std::size_t offset, T v) noexcept {
+    store_le<T>(bytes.data() + offset, v);
+}
+
+}  // namespace robowire

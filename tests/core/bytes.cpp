@@ -1,0 +1,67 @@
+#include <robowire/core/bytes.hpp>
+
+#include <array>
+#include <catch2/catch.hpp>
+#include <string_view>
+
+using namespace robowire;
+
+namespace {
+constexpr std::array<std::uint8_t, 3> abc{0x01, 0x5C, 0xFF};
+
+constexpr bool hex_is(std::span<const std::uint8_t> in, std::string_view want, char sep = ' ') {
+    std::array<char, 64> buf{};
+    const auto n = to_hex(in, buf, sep);
+    return n && std::string_view(buf.data(), *n) == want;
+}
+}  // namespace
+
+TEST_CASE("bytes<N> holds up to N bytes", "[core][bytes]") {
+    constexpr bytes<4> b{0x01, 0x5C, 0xFF};
+    STATIC_REQUIRE(b.size() == 3);
+    STATIC_REQUIRE(b.capacity() == 4);
+    STATIC_REQUIRE(b[1] == 0x5C);
+    STATIC_REQUIRE(b == std::span<const std::uint8_t>(abc));
+    STATIC_REQUIRE(b != bytes<4>{0x01, 0x5C});
+    STATIC_REQUIRE(bytes<4>::zeros(2) == bytes<4>{0, 0});
+    STATIC_REQUIRE(bytes<2>::from(abc).code() == errc::capacity_exceeded);
+
+    bytes<4> r;
+    CHECK(r.empty());
+    CHECK(r.push_back(1));
+    CHECK(r.append(std::array<std::uint8_t, 3>{2, 3, 4}));
+    CHECK_FALSE(r.push_back(5));
+    CHECK_FALSE(r.append(std::array<std::uint8_t, 1>{5}));
+    CHECK(r.size() == 4);
+    int sum = 0;
+    for (auto x : r) sum += x;
+    CHECK(sum == 10);
+    r.resize(1);
+    CHECK(r == bytes<4>{1});
+    r.resize(3);
+    CHECK(r == bytes<4>{1, 0, 0});  // grown bytes are zero
+}
+
+TEST_CASE("hex formatting into a caller's buffer", "[core][bytes]") {
+    STATIC_REQUIRE(hex_is(abc, "01 5C FF"));
+    STATIC_REQUIRE(hex_is(abc, "015CFF", '\0'));
+    STATIC_REQUIRE(hex_is(abc, "01:5C:FF", ':'));
+    STATIC_REQUIRE(hex_is({}, ""));
+    STATIC_REQUIRE(hex_size(3) == 8);
+    std::array<char, 7> small{};
+    const auto r = to_hex(abc, small);
+    REQUIRE_FALSE(r);
+    CHECK(r.error() == error{errc::buffer_too_small, 8});
+}
+
+TEST_CASE("hex parsing accepts common spellings", "[core][bytes]") {
+    STATIC_REQUIRE(parse_hex<8>("01 5C FF").value() == std::span<const std::uint8_t>(abc));
+    STATIC_REQUIRE(parse_hex<8>("015cff").value() == std::span<const std::uint8_t>(abc));
+    STATIC_REQUIRE(parse_hex<8>("0x01,0x5C,0xFF").value() == std::span<const std::uint8_t>(abc));
+    STATIC_REQUIRE(parse_hex<8>("01-5C-FF").value() == std::span<const std::uint8_t>(abc));
+    STATIC_REQUIRE(parse_hex<8>("").value().empty());
+    CHECK(parse_hex<8>("01 5G").error() == error{errc::bad_length, 3});
+    CHECK(parse_hex<8>("01 Z5").error() == error{errc::value_out_of_range, 3});
+    CHECK(parse_hex<8>("015").error() == error{errc::bad_length, 2});
+    CHECK(parse_hex<2>("01 02 03").error() == error{errc::capacity_exceeded, 6});
+}

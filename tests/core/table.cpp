@@ -1,0 +1,125 @@
+// The generic table-driven codec, on a message made up for the test.
+#include <robowire/core/table.hpp>
+
+#include <array>
+#include <catch2/catch.hpp>
+#include <optional>
+
+#include "check.hpp"
+
+namespace demo {
+enum class mode : std::uint8_t { off = 0, slow = 0x10, fast = 0x14 };
+constexpr auto enum_table_of(std::type_identity<mode>) {
+    return std::array<robowire::enum_entry<mode>, 3>{{{mode::off, "off"}, {mode::slow, "slow"}, {mode::fast, "fast"}}};
+}
+struct pair {
+    std::uint8_t kind{};
+    std::int16_t where{};
+    friend constexpr bool operator==(const pair&, const pair&) = default;
+};
+constexpr auto table_of(std::type_identity<pair>) {
+    using namespace robowire;
+    return make_record<pair>("pair", field{"kind", &pair::kind, 0, wire::u8{}},
+                             field{"where", &pair::where, 1, wire::i16le{}, unit{"deg"}});
+}
+struct msg {
+    std::array<std::int8_t, 2> power{};
+    mode how{};
+    std::array<pair, 2> pairs{};
+    std::uint8_t low{};
+    std::uint8_t high{};
+    bool on{};
+    std::optional<float> gain{};
+    std::optional<std::uint8_t> extra{};
+    friend constexpr bool operator==(const msg&, const msg&) = default;
+};
+// 0:0x30 | 1-2 power i8 -127..127 | 3 how | 4-9 2 x pair | 10 low bits 0-3, high bits 4-7 | 11 on | [12-15 gain f32] [16 extra]
+constexpr auto table_of(std::type_identity<msg>) {
+    using namespace robowire;
+    return make_table<msg>("msg", {{0, 0x30, errc::bad_command}},
+                           field{"power", &msg::power, 1, wire::i8{}, range{-127, 127}, unit{"%"}},
+                           field{"how", &msg::how, 3, wire::u8{}}, field{"pairs", &msg::pairs, 4, wire::record{}},
+                           field{"low", &msg::low, 10, wire::bits<0, 4>{}}, field{"high", &msg::high, 10, wire::bits<4, 4>{}},
+                           field{"on", &msg::on, 11, wire::u8{}}, field{"gain", &msg::gain, 12, wire::f32le{}},
+                           field{"extra", &msg::extra, 16, wire::u8{}, range{0, 9}});
+}
+}  // namespace demo
+
+using namespace robowire;
+using demo::msg;
+
+namespace {
+// power 5, -5 (0xFB); how fast (0x14); pairs {1, 0x1234} {2, -1}; low 5 high 0xA -> 0xA5; on
+constexpr auto base = test::hex("30 05 FB 14 01 34 12 02 FF FF A5 01");
+// ... + gain 0.6f (0x3F19999A little-endian) + extra 9
+constexpr auto full = test::hex("30 05 FB 14 01 34 12 02 FF FF A5 01 9A 99 19 3F 09");
+constexpr msg base_msg{{5, -5}, demo::mode::fast, {{{1, 0x1234}, {2, -1}}}, 5, 0xA, true, std::nullopt, std::nullopt};
+constexpr msg full_msg{{5, -5}, demo::mode::fast, {{{1, 0x1234}, {2, -1}}}, 5, 0xA, true, 0.6f, std::uint8_t{9}};
+
+template <std::size_t N>
+constexpr bytes<N> with(bytes<N> b, std::size_t i, std::uint8_t v) {
+    b[i] = v;
+    return b;
+}
+constexpr error decode_error(std::span<const std::uint8_t> in) { return decode<msg>(in).error(); }
+constexpr error encode_error(const msg& m) { return encode(m).error(); }
+}  // namespace
+
+TEST_CASE("table sizes come from the fields", "[core][table]") {
+    STATIC_REQUIRE(min_size_v<msg> == 12);
+    STATIC_REQUIRE(max_size_v<msg> == 17);
+    STATIC_REQUIRE(table_v<demo::pair>.extent() == 3);
+    STATIC_REQUIRE(table_v<msg>.field_count == 8);
+    STATIC_REQUIRE(std::get<2>(table_v<msg>.fields).count == 2);
+    STATIC_REQUIRE(std::get<2>(table_v<msg>.fields).size == 6);
+}
+
+TEST_CASE("table-driven decode", "[core][table]") {
+    STATIC_REQUIRE(decode<msg>(base).value() == base_msg);
+    STATIC_REQUIRE(decode<msg>(full).value() == full_msg);
+    CHECK(decode<msg>(base).value() == base_msg);
+    CHECK(decode<msg>(full).value() == full_msg);
+}
+
+TEST_CASE("table-driven encode", "[core][table]") {
+    STATIC_REQUIRE(encode(base_msg).value() == base);
+    STATIC_REQUIRE(encode(full_msg).value() == full);
+    CHECK(encode(full_msg).value() == full);
+    std::array<std::uint8_t, 17> out{};
+    CHECK(encode_to(full_msg, out).value() == 17);
+    CHECK(test::same(out, full));
+    std::array<std::uint8_t, 16> small{};
+    CHECK(encode_to(full_msg, small).error() == error{errc::buffer_too_small, 17});
+}
+
+TEST_CASE("table-driven decode errors name the byte", "[core][table]") {
+    STATIC_REQUIRE(decode_error(with(base, 0, 0x31)) == error{errc::bad_command, 0});
+    STATIC_REQUIRE(decode_error(base.span().first(11)) == error{errc::too_short, 11});
+    STATIC_REQUIRE(decode_error(base.span().first(1).subspan(1)) == error{errc::too_short, 0});
+    STATIC_REQUIRE(decode_error(full.span().first(14)) == error{errc::bad_length, 12});  // truncated gain
+    STATIC_REQUIRE(decode_error(with(full, 16, 10)) == error{errc::value_out_of_range, 16});
+    STATIC_REQUIRE(decode_error(with(base, 2, 0x80)) == error{errc::value_out_of_range, 2});  // -128
+    STATIC_REQUIRE(decode_error(with(base, 3, 0x11)) == error{errc::invalid_enum, 3});
+    STATIC_REQUIRE(decode_error(with(base, 11, 2)) == error{errc::value_out_of_range, 11});  // bool
+    auto longer = full;
+    REQUIRE(longer.push_back(0));
+    CHECK(decode_error(longer) == error{errc::too_long, 17});
+}
+
+TEST_CASE("table-driven encode rejects what it cannot send", "[core][table]") {
+    constexpr auto m = [](auto change) { msg x = full_msg; change(x); return x; };
+    STATIC_REQUIRE(encode_error(m([](msg& x) { x.power[1] = -128; })) == error{errc::value_out_of_range, 2});
+    STATIC_REQUIRE(encode_error(m([](msg& x) { x.how = demo::mode{3}; })) == error{errc::invalid_enum, 3});
+    STATIC_REQUIRE(encode_error(m([](msg& x) { x.high = 16; })) == error{errc::value_out_of_range, 10});
+    STATIC_REQUIRE(encode_error(m([](msg& x) { x.extra = 10; })) == error{errc::value_out_of_range, 16});
+    STATIC_REQUIRE(encode_error(m([](msg& x) { x.gain.reset(); })) == error{errc::missing_field, 12});
+}
+
+TEST_CASE("round trip keeps NaN payloads", "[core][table]") {
+    msg x = full_msg;
+    x.gain = std::bit_cast<float>(0x7FC01234u);
+    const auto wire = encode(x).value();
+    const auto back = decode<msg>(wire).value();
+    CHECK(std::bit_cast<std::uint32_t>(*back.gain) == 0x7FC01234u);
+    CHECK(encode(back).value() == wire);
+}
