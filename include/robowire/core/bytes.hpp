@@ -76,9 +76,6 @@ public:
     }
     constexpr void clear() noexcept { resize(0); }
 
-    friend constexpr bool operator==(const bytes& a, const bytes& b) noexcept {
-        return a.size_ == b.size_ && std::equal(a.begin(), a.end(), b.begin());
-    }
     friend constexpr bool operator==(const bytes& a, std::span<const std::uint8_t> b) noexcept {
         return a.size_ == b.size() && std::equal(a.begin(), a.end(), b.begin());
     }
@@ -87,6 +84,12 @@ private:
     std::array<std::uint8_t, N> data_{};
     std::size_t size_ = 0;
 };
+
+// Equal when sizes and used bytes are equal (capacities may differ).
+template <std::size_t N, std::size_t M>
+[[nodiscard]] constexpr bool operator==(const bytes<N>& a, const bytes<M>& b) noexcept {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
+}
 
 // Equality of two byte spans.
 [[nodiscard]] constexpr bool equal_bytes(std::span<const std::uint8_t> a, std::span<const std::uint8_t> b) noexcept {

@@ -285,7 +285,7 @@ constexpr bool decode_fields(const Table& t, M& m, std::span<const std::uint8_t>
                 const std::size_t off = base + fd.offset;
                 auto& member = m.*fd.member;
                 if constexpr (FD::is_optional) {
-                    if (in.size() <= off) { member.reset(); return true; }
+                    if (in.size() <= off) return true;  // absent: stays nullopt
                     if (in.size() < off + FD::size) { err = {errc::bad_length, off}; return false; }
                     auto& value = member.emplace();
                     if constexpr (FD::is_array) {
