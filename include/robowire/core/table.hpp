@@ -252,6 +252,10 @@ constexpr auto make_table(std::string_view name, const fixed_byte (&fixed)[K], F
     for (std::size_t i = 0; i < K; ++i) t.fixed[i] = fixed[i];
     return t;
 }
+template <class M, std::size_t K, class... F>
+constexpr auto make_table(std::string_view name, const std::array<fixed_byte, K>& fixed, F... fields) noexcept {
+    return message_table<M, K, F...>{name, fixed, std::tuple<F...>{fields...}};
+}
 // Builds a record table (a struct nested in messages; no fixed bytes).
 template <class M, class... F>
 constexpr auto make_record(std::string_view name, F... fields) noexcept {
@@ -266,6 +270,27 @@ template <class M> inline constexpr std::size_t max_size_v = table_v<M>.max_size
 template <class M, class Fn>
 constexpr void for_each_field(Fn&& fn) {
     std::apply([&](const auto&... f) { (fn(f), ...); }, table_v<M>.fields);
+}
+
+// Bytes of M's encoding that no fixed byte and no field covers (reserved bytes).
+template <class M>
+constexpr std::array<bool, max_size_v<M>> reserved_bytes() noexcept {
+    std::array<bool, max_size_v<M>> reserved{};
+    reserved.fill(true);
+    for (const auto& b : table_v<M>.fixed) reserved[b.offset] = false;
+    for_each_field<M>([&](const auto& f) {
+        for (std::size_t i = f.offset; i < f.end(); ++i) reserved[i] = false;
+    });
+    return reserved;
+}
+
+// reserved_not_zero at the first reserved byte of `in` that is not zero.
+template <class M>
+[[nodiscard]] constexpr result<std::size_t> check_reserved(std::span<const std::uint8_t> in) noexcept {
+    constexpr auto reserved = reserved_bytes<M>();
+    for (std::size_t i = 0; i < in.size() && i < reserved.size(); ++i)
+        if (reserved[i] && in[i] != 0) return fail(errc::reserved_not_zero, i);
+    return in.size();
 }
 
 namespace detail {
@@ -303,6 +328,7 @@ constexpr bool decode_fields(const Table& t, M& m, std::span<const std::uint8_t>
                     return decode_element(fd, member, in, off, err);
                 }
             };
+            (void)one;  // unused for messages without fields
             return (one(f) && ...);
         },
         t.fields);
@@ -380,6 +406,7 @@ constexpr bool encode_fields(const Table& t, const M& m, std::span<std::uint8_t>
                     return encode_element(fd, member, out, off, err);
                 }
             };
+            (void)one;  // unused for messages without fields
             return (one(f) && ...);
         },
         t.fields);
@@ -447,6 +474,7 @@ constexpr result<std::size_t> encoded_size(const M& m) noexcept {
         }
         return true;
     };
+    (void)one;
     const bool ok = std::apply([&](const auto&... f) { return (one(f) && ...); }, t.fields);
     if (!ok) return err;
     return size;

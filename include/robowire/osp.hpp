@@ -1,0 +1,7 @@
+// robowire/osp.hpp - OSP (Open Serial Peripheral): frames, messages, scanner, dispatch.
+#pragma once
+
+#include "osp/decode.hpp"
+#include "osp/frame.hpp"
+#include "osp/messages.hpp"
+#include "osp/scanner.hpp"

@@ -1,0 +1,161 @@
+// robowire/osp/messages.hpp - every OSP message, one table each, and unit helpers.
+// Reserved parameter bytes are sent as 0 and ignored on receive;
+// robowire::check_reserved<M>(bytes) reports them for a strict receiver.
+#pragma once
+
+#include <cstdint>
+#include <numbers>
+
+#include "frame.hpp"
+
+namespace robowire::osp {
+
+// DEV_TYPE values (INFO_DEV_TYPE P1). OBP-1 is spelled OPB-1 in places in the document.
+enum class device_type : std::uint8_t { invalid = 0x00, arm1 = 0x01, obp1 = 0x02, o2d1 = 0x03 };
+constexpr auto enum_table_of(std::type_identity<device_type>) {
+    return std::array<enum_entry<device_type>, 4>{
+        {{device_type::invalid, "invalid"}, {device_type::arm1, "arm1"}, {device_type::obp1, "obp1"}, {device_type::o2d1, "o2d1"}}};
+}
+
+namespace generic {
+// CMD_REQ_DEV_TYPE, DEV 0x00 CMD 0x01: any device answers with device_type.
+struct request_device_type {
+    friend constexpr bool operator==(const request_device_type&, const request_device_type&) = default;
+};
+constexpr auto table_of(std::type_identity<request_device_type>) {
+    return make_table<request_device_type>("request_device_type", detail::fixed(0x00, 0x01));
+}
+
+// INFO_DEV_TYPE, DEV 0x00 CMD 0x11. P1: the device's type.
+struct device_type {
+    osp::device_type type = osp::device_type::invalid;
+    friend constexpr bool operator==(const device_type&, const device_type&) = default;
+};
+constexpr auto table_of(std::type_identity<device_type>) {
+    return make_table<device_type>("device_type", detail::fixed(0x00, 0x11), field{"type", &device_type::type, 4, wire::u8{}});
+}
+}  // namespace generic
+
+namespace arm1 {
+// ARM1_CMD_SET_ANGLE, DEV 0x01 CMD 0x02. P1: joint; P2-P3: angle (u16le, raw; see angle_to_radians).
+struct set_angle {
+    std::uint8_t joint = 0;
+    std::uint16_t angle = 0;
+    friend constexpr bool operator==(const set_angle&, const set_angle&) = default;
+};
+constexpr auto table_of(std::type_identity<set_angle>) {
+    return make_table<set_angle>("set_angle", detail::fixed(0x01, 0x02), field{"joint", &set_angle::joint, 4, wire::u8{}},
+                                 field{"angle", &set_angle::angle, 5, wire::u16le{}, unit{"rad", std::numbers::pi / 16384.0}});
+}
+
+// The document gives the angle no unit; the published firmware reads 16384 = pi radians.
+// Radians for a raw angle (0 .. 65535 -> 0 .. ~4 pi).
+constexpr double angle_to_radians(std::uint16_t raw) noexcept { return raw * (std::numbers::pi / 16384.0); }
+// Raw angle for `radians` (0 .. 65535 * pi / 16384), rounded; value_out_of_range outside.
+constexpr result<std::uint16_t> angle_from_radians(double radians) noexcept {
+    const double raw = radians * (16384.0 / std::numbers::pi);
+    if (!(raw >= -0.5 && raw < 65535.5)) return fail(errc::value_out_of_range, 5);
+    return static_cast<std::uint16_t>(raw + 0.5);
+}
+}  // namespace arm1
+
+namespace obp1 {
+// Requests, DEV 0x02, no parameters. The battery answers with the message named in each.
+struct request_soc {  // OBP_CMD_REQ_SOC, CMD 0x01 -> soc
+    friend constexpr bool operator==(const request_soc&, const request_soc&) = default;
+};
+struct request_voltage {  // OBP_CMD_REQ_VOLTAGE, CMD 0x02 -> voltage
+    friend constexpr bool operator==(const request_voltage&, const request_voltage&) = default;
+};
+struct request_current {  // OBP_CMD_REQ_CURRENT, CMD 0x03 -> current
+    friend constexpr bool operator==(const request_current&, const request_current&) = default;
+};
+struct request_status {  // OBP_CMD_REQ_STATUS, CMD 0x04 -> status
+    friend constexpr bool operator==(const request_status&, const request_status&) = default;
+};
+constexpr auto table_of(std::type_identity<request_soc>) { return make_table<request_soc>("request_soc", detail::fixed(0x02, 0x01)); }
+constexpr auto table_of(std::type_identity<request_voltage>) {
+    return make_table<request_voltage>("request_voltage", detail::fixed(0x02, 0x02));
+}
+constexpr auto table_of(std::type_identity<request_current>) {
+    return make_table<request_current>("request_current", detail::fixed(0x02, 0x03));
+}
+constexpr auto table_of(std::type_identity<request_status>) {
+    return make_table<request_status>("request_status", detail::fixed(0x02, 0x04));
+}
+
+// OBP_INFO_SOC, CMD 0x11. State of charge, 0 = 0 %, 65535 = 100 %.
+struct soc {
+    std::uint16_t soc_raw = 0;
+    friend constexpr bool operator==(const soc&, const soc&) = default;
+};
+// OBP_INFO_VOLTAGE, CMD 0x12. Volts x 100 (-32768 = -327.68 V, 32767 = 327.67 V).
+struct voltage {
+    std::int16_t centivolts = 0;
+    friend constexpr bool operator==(const voltage&, const voltage&) = default;
+};
+// OBP_INFO_CURRENT, CMD 0x13. Milliamps (-32.768 A .. 32.767 A).
+struct current {
+    std::int16_t milliamps = 0;
+    friend constexpr bool operator==(const current&, const current&) = default;
+};
+
+enum class state : std::uint8_t { unknown = 0, idle = 1, discharging = 2, charging = 3, fully_charged = 4 };
+constexpr auto enum_table_of(std::type_identity<state>) {
+    return std::array<enum_entry<state>, 5>{{{state::unknown, "unknown"},
+                                             {state::idle, "idle"},
+                                             {state::discharging, "discharging"},
+                                             {state::charging, "charging"},
+                                             {state::fully_charged, "fully_charged"}}};
+}
+// Status flag bits (bits 4-7 reserved; kept raw).
+namespace flag {
+inline constexpr std::uint8_t low_voltage = 1u << 0;
+inline constexpr std::uint8_t high_voltage = 1u << 1;
+inline constexpr std::uint8_t overheat = 1u << 2;
+inline constexpr std::uint8_t short_circuit = 1u << 3;
+}  // namespace flag
+
+// OBP_INFO_STATUS, CMD 0x14 (the document prints 0x13, OBP_INFO_CURRENT's code).
+struct status {
+    obp1::state state = obp1::state::unknown;
+    std::uint8_t flags = 0;  // flag:: bits
+    constexpr bool low_voltage() const noexcept { return flags & flag::low_voltage; }
+    constexpr bool high_voltage() const noexcept { return flags & flag::high_voltage; }
+    constexpr bool overheat() const noexcept { return flags & flag::overheat; }
+    constexpr bool short_circuit() const noexcept { return flags & flag::short_circuit; }
+    friend constexpr bool operator==(const status&, const status&) = default;
+};
+
+constexpr auto table_of(std::type_identity<soc>) {
+    return make_table<soc>("soc", detail::fixed(0x02, 0x11),
+                           field{"soc_raw", &soc::soc_raw, 4, wire::u16le{}, unit{"%", 100.0 / 65535.0}});
+}
+constexpr auto table_of(std::type_identity<voltage>) {
+    return make_table<voltage>("voltage", detail::fixed(0x02, 0x12),
+                               field{"centivolts", &voltage::centivolts, 4, wire::i16le{}, unit{"V", 0.01}});
+}
+constexpr auto table_of(std::type_identity<current>) {
+    return make_table<current>("current", detail::fixed(0x02, 0x13),
+                               field{"milliamps", &current::milliamps, 4, wire::i16le{}, unit{"A", 0.001}});
+}
+constexpr auto table_of(std::type_identity<status>) {
+    return make_table<status>("status", detail::fixed(0x02, 0x14), field{"state", &status::state, 4, wire::u8{}},
+                              field{"flags", &status::flags, 5, wire::u8{}});
+}
+
+// Unit helpers.
+constexpr double soc_percent(std::uint16_t soc_raw) noexcept { return soc_raw * (100.0 / 65535.0); }
+constexpr double volts(std::int16_t centivolts) noexcept { return centivolts / 100.0; }
+constexpr double amps(std::int16_t milliamps) noexcept { return milliamps / 1000.0; }
+constexpr double soc_percent(const soc& m) noexcept { return soc_percent(m.soc_raw); }
+constexpr double volts(const voltage& m) noexcept { return volts(m.centivolts); }
+constexpr double amps(const current& m) noexcept { return amps(m.milliamps); }
+// Raw SOC for a percentage 0..100 (rounded); value_out_of_range outside.
+constexpr result<std::uint16_t> soc_from_percent(double percent) noexcept {
+    if (!(percent >= 0.0 && percent <= 100.0)) return fail(errc::value_out_of_range, 4);
+    return static_cast<std::uint16_t>(percent * 655.35 + 0.5);
+}
+}  // namespace obp1
+
+}  // namespace robowire::osp
