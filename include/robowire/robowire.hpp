@@ -1,0 +1,5 @@
+// robowire/robowire.hpp - every protocol.
+#pragma once
+
+#include "core.hpp"
+#include "osp.hpp"
