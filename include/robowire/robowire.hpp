@@ -2,4 +2,5 @@
 #pragma once
 
 #include "core.hpp"
+#include "navbot.hpp"
 #include "osp.hpp"

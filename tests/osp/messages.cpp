@@ -73,7 +73,7 @@ TEST_CASE("osp: OBP-1 answers", "[osp]") {
     STATIC_REQUIRE(decode_error<obp1::status>("FF AA 02 14 05 00 00 00 55 77") == error{errc::invalid_enum, 4});
     STATIC_REQUIRE(decode_error<obp1::status>("FF AA 02 13 03 05 00 00 55 77") == error{errc::bad_command, 3});
     constexpr obp1::status s{obp1::state::charging, 0x05};
-    STATIC_REQUIRE(s.low_voltage() && !s.high_voltage() && s.overheat() && !s.short_circuit());
+    STATIC_REQUIRE((s.low_voltage() && !s.high_voltage() && s.overheat() && !s.short_circuit()));
     CHECK(encodes_to(obp1::current{-1500}, "FF AA 02 13 24 FA 00 00 55 77"));
 }
 

@@ -220,19 +220,20 @@ struct message_table {
     std::array<fixed_byte, K> fixed;
     std::tuple<F...> fields;
     std::size_t max_input = 0;  // longest accepted input; 0: extent(). Longer is decoded, the rest ignored.
+    std::size_t wire_size = 0;  // nonzero: the message is at least this long (reserved bytes after the last field)
 
     static constexpr std::size_t field_count = sizeof...(F);
 
     // Bytes up to the end of the last field (with every optional block).
     constexpr std::size_t extent() const noexcept {
-        std::size_t e = 0;
+        std::size_t e = wire_size;
         for (const auto& b : fixed) e = b.offset + 1 > e ? b.offset + 1 : e;
         std::apply([&](const auto&... f) { ((e = f.end() > e ? f.end() : e), ...); }, fields);
         return e;
     }
     // Shortest valid input: fixed bytes and every non-optional field.
     constexpr std::size_t min_size() const noexcept {
-        std::size_t e = 0;
+        std::size_t e = wire_size;
         for (const auto& b : fixed) e = b.offset + 1 > e ? b.offset + 1 : e;
         auto req = [&](const auto& f) {
             const std::size_t end = f.kind == wire_kind::tail ? f.offset : f.end();

@@ -1,0 +1,7 @@
+// robowire/navbot.hpp - NAVBOT-ES02: frames, maneuver, multi-frame messages, BLE constants.
+#pragma once
+
+#include "navbot/decode.hpp"
+#include "navbot/frame.hpp"
+#include "navbot/maneuver.hpp"
+#include "navbot/multiframe.hpp"

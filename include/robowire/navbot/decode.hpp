@@ -1,0 +1,29 @@
+// robowire/navbot/decode.hpp - decode any NAVBOT frame into a variant.
+#pragma once
+
+#include <span>
+#include <variant>
+
+#include "frame.hpp"
+#include "maneuver.hpp"
+
+namespace robowire::navbot {
+
+// A maneuver (command 0x10, single frame), or any other frame as is (JSON
+// and Wi-Fi fragments: feed them to a reassembler).
+using message = std::variant<maneuver, frame>;
+
+// Decodes one 20-byte frame. Signed maneuver channels: two's complement.
+// Length errors: too_short / too_long (length_error_text explains them).
+[[nodiscard]] constexpr result<message> decode_frame(std::span<const std::uint8_t> in) noexcept {
+    const auto f = robowire::decode<frame>(in);
+    if (!f) return f.error();
+    if (f->command == command::maneuver) {
+        const auto m = robowire::decode<maneuver>(in);
+        if (!m) return m.error();
+        return message{*m};
+    }
+    return message{*f};
+}
+
+}  // namespace robowire::navbot
