@@ -22,6 +22,35 @@ void expect(bool ok, std::string_view what) {
     }
 }
 
+void navbot_demo() {
+    namespace navbot = robowire::navbot;
+    std::puts("NAVBOT-ES02 (BLE, 20-byte frames)");
+    navbot::maneuver m{};
+    m.switch_a = navbot::switch_a::start;
+    m.pitch = -10;  // back slowly
+    const auto wire = navbot::encode(m).value();
+    print_hex("maneuver: start, pitch -10", wire);
+    expect(wire[7] == 0xF6, "two's complement -10");
+    const auto back = navbot::decode_maneuver(wire);
+    expect(back && *back == m, "navbot round trip");
+    // The document's sample writes -10 as 0x8A; the robot would read -118.
+    const auto doc = navbot::encode(m, navbot::sign_encoding::sign_magnitude).value();
+    print_hex("same, document's sign-magnitude", doc);
+    const auto refused = navbot::decode_maneuver(doc);
+    std::printf("  read the robot's way: %s at byte %zu (0x8A = -118)\n", robowire::to_string(refused.code()).data(),
+                refused.error().offset);
+    expect(refused.code() == robowire::errc::value_out_of_range, "sign-magnitude refused");
+    // A JSON request split into frames and put back together.
+    const auto frames = navbot::json_frames(R"({"type":"get_device_info"})").value();
+    navbot::reassembler<60> r;
+    for (const auto& f : frames) {
+        print_hex("json frame", f);
+        (void)r.push(f);
+    }
+    std::printf("  reassembled %zu frames: %.*s\n", frames.size(), static_cast<int>(r.text().size()), r.text().data());
+    expect(r.text() == R"({"type":"get_device_info"})", "navbot json");
+}
+
 void osp_demo() {
     namespace osp = robowire::osp;
     std::puts("OSP (serial, 10-byte frames)");
@@ -52,6 +81,7 @@ void osp_demo() {
 }  // namespace
 
 int main() {
+    navbot_demo();
     osp_demo();
     if (failures) {
         std::printf("%d check(s) failed\n", failures);
