@@ -4,6 +4,7 @@
 #include "core/advertising.hpp"
 #include "core/bits.hpp"
 #include "core/bytes.hpp"
+#include "core/dispatch.hpp"
 #include "core/endian.hpp"
 #include "core/result.hpp"
 #include "core/table.hpp"

@@ -5,15 +5,26 @@
 #include <cstddef>
 #include <string_view>
 
+#include "result.hpp"
+
 namespace robowire {
 
 template <std::size_t N>
 class text {
 public:
     constexpr text() noexcept = default;
-    // Precondition: s.size() <= N (longer input is cut; use make() to check).
-    constexpr text(std::string_view s) noexcept { assign(s); }
-    constexpr text(const char* s) noexcept : text(std::string_view(s)) {}
+    // From a string literal; one longer than N does not compile.
+    template <std::size_t M>
+        requires(M - 1 <= N)
+    consteval text(const char (&literal)[M]) noexcept {
+        assign(std::string_view(literal, M - 1));
+    }
+    // From any string; value_out_of_range (offset N) if it is longer than N.
+    static constexpr result<text> make(std::string_view s) noexcept {
+        text t;
+        if (!t.assign(s)) return fail(errc::value_out_of_range, N);
+        return t;
+    }
 
     // false (and no change) if s is longer than N.
     constexpr bool assign(std::string_view s) noexcept {

@@ -1,0 +1,81 @@
+// robowire/buwizz3/advertisement.hpp - recognise a BuWizz3 in BLE advertising data.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+
+#include "../core/advertising.hpp"
+#include "../core/text.hpp"
+#include "uuids.hpp"
+
+namespace robowire::buwizz3 {
+
+enum class device_mode : std::uint8_t { unknown, application, bootloader };
+
+// What an advertisement (and its scan response) says about a BuWizz3.
+struct advertisement {
+    device_mode mode = device_mode::unknown;         // from manufacturer data
+    std::array<std::uint8_t, 2> firmware_version{};  // application mode: x y (3.22 advertises 03 22)
+    std::uint16_t serial_low16 = 0;                  // low 16 bits of the serial (0 in bootloader mode)
+    bool has_manufacturer_data = false;              // 4E 05 42 57 ... seen
+    bool has_service_uuid = false;                   // service UUID in AD type 0x06 or 0x07
+    std::optional<text<29>> local_name{};            // complete or shortened local name
+    friend constexpr bool operator==(const advertisement&, const advertisement&) = default;
+};
+
+// Manufacturer data payload after AD type 0xFF: company 0x054E little-endian, then 'B' 'W'.
+inline constexpr std::array<std::uint8_t, 4> manufacturer_prefix{0x4E, 0x05, 0x42, 0x57};
+
+namespace detail {
+constexpr void read_structures(std::span<const std::uint8_t> adv, advertisement& out, error& err) noexcept {
+    ad::reader r(adv);
+    while (auto s = r.next()) {
+        const auto d = s->data;
+        if (s->type == ad::manufacturer_data && d.size() >= 8 && d[0] == manufacturer_prefix[0] &&
+            d[1] == manufacturer_prefix[1] && d[2] == manufacturer_prefix[2] && d[3] == manufacturer_prefix[3]) {
+            out.has_manufacturer_data = true;
+            if (d[4] == 0x42 && d[5] == 0x4C) {  // 'B' 'L'
+                out.mode = device_mode::bootloader;
+            } else {
+                out.mode = device_mode::application;
+                out.firmware_version = {d[4], d[5]};
+            }
+            out.serial_low16 = static_cast<std::uint16_t>(d[6] | d[7] << 8);
+        } else if (s->type == ad::incomplete_uuid128_list || s->type == ad::complete_uuid128_list) {
+            const auto want = service_uuid.on_air();
+            for (std::size_t i = 0; i + 16 <= d.size(); i += 16) {
+                bool same = true;
+                for (std::size_t k = 0; k < 16; ++k) same = same && d[i + k] == want[k];
+                if (same) out.has_service_uuid = true;
+            }
+        } else if (s->type == ad::complete_local_name || s->type == ad::shortened_local_name) {
+            std::array<char, 29> chars{};
+            const std::size_t n = d.size() < chars.size() ? d.size() : chars.size();
+            for (std::size_t i = 0; i < n; ++i) chars[i] = static_cast<char>(d[i]);
+            out.local_name = text<29>::make(std::string_view(chars.data(), n)).value();
+        }
+    }
+    if (r.error().code != errc::ok && err.code == errc::ok) err = r.error();
+}
+}  // namespace detail
+
+// Parses an advertisement and, optionally, its scan response. Returns
+// nullopt when neither BuWizz3 manufacturer data nor the BuWizz3 service UUID
+// is present; bad_length (offset of the bad length byte; scan response
+// offsets count after the advertisement) when the AD data is malformed.
+constexpr result<std::optional<advertisement>> parse_advertisement(
+    std::span<const std::uint8_t> adv, std::span<const std::uint8_t> scan_response = {}) noexcept {
+    advertisement out;
+    error err{};
+    detail::read_structures(adv, out, err);
+    error err2{};
+    detail::read_structures(scan_response, out, err2);
+    if (err.code != errc::ok) return err;
+    if (err2.code != errc::ok) return error{err2.code, adv.size() + err2.offset};
+    if (!out.has_manufacturer_data && !out.has_service_uuid) return std::optional<advertisement>{};
+    return std::optional<advertisement>{out};
+}
+
+}  // namespace robowire::buwizz3
