@@ -125,8 +125,12 @@ template <class E>
     return std::nullopt;
 }
 
-// The table of a message or record type.
+// A type with a field table (found by ADL: table_of(std::type_identity<M>)).
 template <class M>
+concept described = requires { table_of(std::type_identity<M>{}); };
+
+// The table of a message or record type.
+template <described M>
 inline constexpr auto table_v = table_of(std::type_identity<M>{});
 
 namespace detail {
@@ -264,8 +268,8 @@ constexpr auto make_record(std::string_view name, F... fields) noexcept {
 }
 
 // Size limits of a message's encoding.
-template <class M> inline constexpr std::size_t min_size_v = table_v<M>.min_size();
-template <class M> inline constexpr std::size_t max_size_v = table_v<M>.max_size();
+template <described M> inline constexpr std::size_t min_size_v = table_v<M>.min_size();
+template <described M> inline constexpr std::size_t max_size_v = table_v<M>.max_size();
 
 // Calls fn(field) for each field of M's table, in table order.
 template <class M, class Fn>
@@ -485,7 +489,7 @@ constexpr result<std::size_t> encoded_size(const M& m) noexcept {
 
 // Decodes a message of type M from `in`; every length, fixed byte, range and
 // enum is checked, and the error says what and at which byte offset.
-template <class M>
+template <described M>
 [[nodiscard]] constexpr result<M> decode(std::span<const std::uint8_t> in) noexcept {
     constexpr const auto& t = table_v<M>;
     for (const auto& b : t.fixed)
@@ -501,7 +505,7 @@ template <class M>
 }
 
 // Encodes m; out-of-range values and invalid enums are errors (never truncated).
-template <class M>
+template <described M>
 [[nodiscard]] constexpr result<bytes<max_size_v<M>>> encode(const M& m) noexcept {
     constexpr const auto& t = table_v<M>;
     const auto size = detail::encoded_size(m);
@@ -514,7 +518,7 @@ template <class M>
 }
 
 // Encodes m into a caller's buffer; returns the number of bytes written.
-template <class M>
+template <described M>
 [[nodiscard]] constexpr result<std::size_t> encode_to(const M& m, std::span<std::uint8_t> out) noexcept {
     const auto r = encode(m);
     if (!r) return r.error();

@@ -44,6 +44,10 @@ public:
 
     friend constexpr bool operator==(const text& a, const text& b) noexcept { return a.view() == b.view(); }
     friend constexpr bool operator==(const text& a, std::string_view b) noexcept { return a.view() == b; }
+    template <std::size_t M>
+    friend constexpr bool operator==(const text& a, const char (&b)[M]) noexcept {
+        return a.view() == std::string_view(b, M - 1);
+    }
 
 private:
     std::array<char, N> data_{};
