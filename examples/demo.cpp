@@ -22,6 +22,40 @@ void expect(bool ok, std::string_view what) {
     }
 }
 
+void buwizz3_demo() {
+    namespace bw = robowire::buwizz3;
+    std::puts("BuWizz3 (BLE power brick)");
+    const auto drive = robowire::encode(bw::set_motor_data{{100, -100, 0, 0, 127, -127}, 0x03, 0}).value();
+    print_hex("set_motor_data", drive);
+    const auto cmd = bw::decode_command(drive);
+    expect(cmd && std::holds_alternative<bw::set_motor_data>(*cmd), "buwizz3 decode_command");
+    const auto pid = robowire::encode(bw::position_servo_preset(0)).value();
+    print_hex("set_pid_parameters (preset)", pid);
+    // A 54-byte status report as it arrives 20 times a second.
+    std::array<std::uint8_t, 54> report{0x01, 0x73, 0x50, 0x0A, 0x14, 0x1E, 0x28, 0x32, 0xC8, 0x23, 0xF0, 0xFF, 0xF0, 0x7F};
+    report[22] = 0x30;  // port 1: motor type 0x30, velocity -20, absolute -180, position -100000
+    report[23] = 0xEC;
+    report[24] = 0x4C;
+    report[25] = 0xFF;
+    report[26] = 0x60;
+    report[27] = 0x79;
+    report[28] = 0xFE;
+    report[29] = 0xFF;
+    const auto n = bw::decode_notification(report);
+    expect(n && std::holds_alternative<bw::status>(*n), "buwizz3 status");
+    if (n) {
+        const auto& s = std::get<bw::status>(*n);
+        std::printf("  status: battery %.2f V, port 6 %.3f A, accel x %.1f mg, port 1 at %d deg, charging %s\n",
+                    bw::battery_volts(s), bw::motor_amps(s, 5), bw::accel_milli_g(s.accel_raw[0]),
+                    static_cast<int>(s.pu_motors[0].position), s.charging() ? "yes" : "no");
+        expect(s.pu_motors[0].position == -100000 && s.battery_voltage_raw == 80, "buwizz3 status fields");
+    }
+    // Out of range is an error, not a silently truncated value.
+    const auto bad = robowire::encode(bw::set_data_period{10});
+    std::printf("  set_data_period 10 ms: %s at byte %zu\n", robowire::to_string(bad.code()).data(), bad.error().offset);
+    expect(bad.code() == robowire::errc::value_out_of_range, "buwizz3 range");
+}
+
 void navbot_demo() {
     namespace navbot = robowire::navbot;
     std::puts("NAVBOT-ES02 (BLE, 20-byte frames)");
@@ -81,6 +115,7 @@ void osp_demo() {
 }  // namespace
 
 int main() {
+    buwizz3_demo();
     navbot_demo();
     osp_demo();
     if (failures) {
