@@ -30,7 +30,7 @@ TEST_CASE("buwizz3: UUIDs", "[buwizz3][uuid]") {
     STATIC_REQUIRE(chars_are(uart_characteristic(4).value(), "50053904-74fb-4481-88b3-9919b1676e93"));
     STATIC_REQUIRE(uart_characteristic(0).code() == errc::value_out_of_range);
     STATIC_REQUIRE(uart_characteristic(5).code() == errc::value_out_of_range);
-    STATIC_REQUIRE(application_uuid.on_air()[12] == 0x01 && application_uuid.on_air()[13] == 0x29);
+    STATIC_REQUIRE((application_uuid.on_air()[12] == 0x01 && application_uuid.on_air()[13] == 0x29));
 }
 
 TEST_CASE("buwizz3: advertising in application mode", "[buwizz3][advertising]") {
@@ -56,7 +56,7 @@ TEST_CASE("buwizz3: advertising in bootloader mode, by service UUID only, and no
     STATIC_REQUIRE(b->firmware_version == std::array<std::uint8_t, 2>{0, 0});
     STATIC_REQUIRE(!b->local_name.has_value());
     constexpr auto only_uuid = parse_advertisement(test::hex("02 01 06"), scan).value();
-    STATIC_REQUIRE(only_uuid->has_service_uuid && only_uuid->mode == device_mode::unknown);
+    STATIC_REQUIRE((only_uuid->has_service_uuid && only_uuid->mode == device_mode::unknown));
     STATIC_REQUIRE(!parse_advertisement(test::hex("02 01 06 05 09 4F 74 68 72")).value().has_value());
     // manufacturer data of another company / too short is not BuWizz3
     STATIC_REQUIRE(!parse_advertisement(test::hex("09 FF 4C 00 42 57 03 22 34 12")).value().has_value());

@@ -130,7 +130,7 @@ TEST_CASE("navbot: decode_frame dispatches", "[navbot]") {
 
 TEST_CASE("navbot: BLE constants and name matching", "[navbot]") {
     STATIC_REQUIRE(service_uuid.on_air()[0] == 0x9E);  // ...dcca9e, least significant first
-    STATIC_REQUIRE(service_uuid.value[0] == 0x6E && service_uuid.value[3] == 0x11);
+    STATIC_REQUIRE((service_uuid.value[0] == 0x6E && service_uuid.value[3] == 0x11));
     STATIC_REQUIRE(write_uuid.short_value() == 0x0012);
     STATIC_REQUIRE(notify_uuid.short_value() == 0x0013);
     STATIC_REQUIRE(is_navbot_name("navbot_es02-A1B2"));

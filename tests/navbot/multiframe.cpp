@@ -39,7 +39,7 @@ TEST_CASE("navbot: fragmenter golden frames", "[navbot][multiframe]") {
     STATIC_REQUIRE(frames_of_json(R"({"type":"get_device_info"})") == 2);  // 26 chars
     STATIC_REQUIRE(json_frames(R"({"a":1})").value()[0] ==
                    test::hex("55 AA 02 00 00 7B 22 61 22 3A 31 7D 00 00 00 00 00 00 00 00"));
-    STATIC_REQUIRE(frames_for(0) == 1 && frames_for(15) == 1 && frames_for(16) == 2 && frames_for(3840) == 256);
+    STATIC_REQUIRE((frames_for(0) == 1 && frames_for(15) == 1 && frames_for(16) == 2 && frames_for(3840) == 256));
     std::vector<std::uint8_t> too_big(max_payload + 1);
     CHECK(make_frames(command::wifi, too_big).error() == error{errc::capacity_exceeded, max_payload});
 }
