@@ -64,6 +64,14 @@ TEST_CASE("buwizz3: advertising in bootloader mode, by service UUID only, and no
     CHECK(parse_advertisement(boot_adv).value()->mode == device_mode::bootloader);
 }
 
+TEST_CASE("buwizz3: the last manufacturer data record counts, whole", "[buwizz3][advertising]") {
+    // application record (version 4C 01, serial 0x0642) then a bootloader record: found by fuzzing
+    constexpr auto a = parse_advertisement(test::hex("02 01 06 09 FF 4E 05 42 57 4C 01 42 06 09 FF 4E 05 42 57 42 4C 00 00")).value();
+    STATIC_REQUIRE(a->mode == device_mode::bootloader);
+    STATIC_REQUIRE(a->firmware_version == std::array<std::uint8_t, 2>{0, 0});
+    STATIC_REQUIRE(a->serial_low16 == 0);
+}
+
 TEST_CASE("buwizz3: malformed advertising data", "[buwizz3][advertising]") {
     STATIC_REQUIRE(parse_advertisement(test::hex("02 01 06 09 FF 4E")).error() == error{errc::bad_length, 3});
     // scan response offsets count after the advertisement (3 bytes)

@@ -38,6 +38,7 @@ constexpr void read_structures(std::span<const std::uint8_t> adv, advertisement&
             out.has_manufacturer_data = true;
             if (d[4] == 0x42 && d[5] == 0x4C) {  // 'B' 'L'
                 out.mode = device_mode::bootloader;
+                out.firmware_version = {0, 0};
             } else {
                 out.mode = device_mode::application;
                 out.firmware_version = {d[4], d[5]};
@@ -61,7 +62,8 @@ constexpr void read_structures(std::span<const std::uint8_t> adv, advertisement&
 }
 }  // namespace detail
 
-// Parses an advertisement and, optionally, its scan response. Returns
+// Parses an advertisement and, optionally, its scan response. When several
+// BuWizz3 manufacturer data structures are present, the last one counts. Returns
 // nullopt when neither BuWizz3 manufacturer data nor the BuWizz3 service UUID
 // is present; bad_length (offset of the bad length byte; scan response
 // offsets count after the advertisement) when the AD data is malformed.
