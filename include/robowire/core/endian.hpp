@@ -1,10 +1,12 @@
 // robowire/core/endian.hpp - little-endian loads and stores on byte spans.
-// Byte-by-byte and constexpr: alignment-safe, usable in static_assert.
+// constexpr (byte by byte in constant evaluation), alignment-safe (memcpy at
+// run time on little-endian hosts), usable in static_assert.
 #pragma once
 
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <type_traits>
 
@@ -28,6 +30,13 @@ template <class T>
 [[nodiscard]] constexpr T load_le(const std::uint8_t* p) noexcept {
     static_assert(detail::is_wire_scalar_v<T>, "load_le: unsupported type");
     using U = typename detail::uint_of_size<sizeof(T)>::type;
+    if constexpr (std::endian::native == std::endian::little) {
+        if (!std::is_constant_evaluated()) {  // one (possibly unaligned) load
+            T v;
+            std::memcpy(&v, p, sizeof(T));
+            return v;
+        }
+    }
     U u = 0;
     for (std::size_t i = 0; i < sizeof(T); ++i) u = static_cast<U>(u | static_cast<U>(static_cast<U>(p[i]) << (8 * i)));
     return std::bit_cast<T>(u);
@@ -37,6 +46,12 @@ template <class T>
 template <class T>
 constexpr void store_le(std::uint8_t* p, T v) noexcept {
     static_assert(detail::is_wire_scalar_v<T>, "store_le: unsupported type");
+    if constexpr (std::endian::native == std::endian::little) {
+        if (!std::is_constant_evaluated()) {
+            std::memcpy(p, &v, sizeof(T));
+            return;
+        }
+    }
     using U = typename detail::uint_of_size<sizeof(T)>::type;
     const U u = std::bit_cast<U>(v);
     for (std::size_t i = 0; i < sizeof(T); ++i) p[i] = static_cast<std::uint8_t>(u >> (8 * i));

@@ -78,6 +78,12 @@ public:
     constexpr result(const T& val) noexcept(std::is_nothrow_copy_constructible_v<T>) : value_(val), ok_(true) {}
     constexpr result(T&& val) noexcept(std::is_nothrow_move_constructible_v<T>) : value_(std::move(val)), ok_(true) {}
     constexpr result(robowire::error e) noexcept : error_(e), ok_(false) {}
+    // Turns this result into an error.
+    constexpr result& operator=(robowire::error e) noexcept {
+        error_ = e;
+        ok_ = false;
+        return *this;
+    }
 
     constexpr bool has_value() const noexcept { return ok_; }
     constexpr explicit operator bool() const noexcept { return ok_; }

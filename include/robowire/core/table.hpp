@@ -15,6 +15,7 @@
 #include <span>
 #include <string_view>
 #include <tuple>
+#include <utility>
 #include <type_traits>
 
 #include "bits.hpp"
@@ -300,81 +301,109 @@ template <class M>
 
 namespace detail {
 
+#if defined(__GNUC__) || defined(__clang__)
+#define ROBOWIRE_ALWAYS_INLINE [[gnu::always_inline]] inline
+#else
+#define ROBOWIRE_ALWAYS_INLINE inline
+#endif
+
 template <class M>
 concept reports_trailing = requires(M m) { m.ignored_trailing_bytes = std::size_t{}; };
 
-template <class F, class E>
-constexpr bool decode_element(const F& f, E& v, std::span<const std::uint8_t> in, std::size_t off, error& err) noexcept;
+// Field I of M's table, as a compile-time constant.
+template <class M, std::size_t I>
+inline constexpr const auto& field_v = std::get<I>(table_v<M>.fields);
+template <class M>
+inline constexpr std::size_t field_count_v = std::tuple_size_v<std::remove_cvref_t<decltype(table_v<M>.fields)>>;
+template <class M, std::size_t I>
+using field_t = std::remove_cvref_t<decltype(field_v<M, I>)>;
 
-template <class Table, class M>
-constexpr bool decode_fields(const Table& t, M& m, std::span<const std::uint8_t> in, std::size_t base, error& err) noexcept {
-    return std::apply(
-        [&](const auto&... f) {
-            auto one = [&](const auto& fd) -> bool {
-                using FD = std::remove_cvref_t<decltype(fd)>;
-                const std::size_t off = base + fd.offset;
-                auto& member = m.*fd.member;
-                if constexpr (FD::is_optional) {
-                    if (in.size() <= off) return true;  // absent: stays nullopt
-                    if (in.size() < off + FD::size) { err = {errc::bad_length, off}; return false; }
-                    auto& value = member.emplace();
-                    if constexpr (FD::is_array) {
-                        for (std::size_t i = 0; i < FD::count; ++i)
-                            if (!decode_element(fd, value[i], in, off + i * FD::element_size, err)) return false;
-                        return true;
-                    } else {
-                        return decode_element(fd, value, in, off, err);
-                    }
-                } else if constexpr (FD::is_array) {
-                    for (std::size_t i = 0; i < FD::count; ++i)
-                        if (!decode_element(fd, member[i], in, off + i * FD::element_size, err)) return false;
-                    return true;
-                } else {
-                    return decode_element(fd, member, in, off, err);
-                }
-            };
-            (void)one;  // unused for messages without fields
-            return (one(f) && ...);
-        },
-        t.fields);
+// ---- decode: every offset and range below is a template constant
+
+template <class M, std::size_t I, std::size_t Off, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::uint8_t> in, error& err) noexcept;
+
+template <class M, std::size_t Base, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, error& err,
+                                                    std::index_sequence<I...>) noexcept;
+
+template <class M, std::size_t I, std::size_t Off, class V, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_array(V& v, std::span<const std::uint8_t> in, error& err,
+                                                   std::index_sequence<K...>) noexcept {
+    return (decode_element<M, I, Off + K * field_t<M, I>::element_size>(v[K], in, err) && ...);
 }
 
-template <class F, class E>
-constexpr bool decode_element(const F& f, E& v, std::span<const std::uint8_t> in, std::size_t off, error& err) noexcept {
+template <class M, std::size_t I, std::size_t Off, class V>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_value(V& v, std::span<const std::uint8_t> in, error& err) noexcept {
+    using F = field_t<M, I>;
+    if constexpr (F::is_array) return decode_array<M, I, Off>(v, in, err, std::make_index_sequence<F::count>{});
+    else return decode_element<M, I, Off>(v, in, err);
+}
+
+template <class M, std::size_t I, std::size_t Base>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::uint8_t> in, error& err) noexcept {
+    constexpr const auto& f = field_v<M, I>;
+    using F = field_t<M, I>;
+    constexpr std::size_t off = Base + f.offset;
+    auto& member = m.*(f.member);
+    if constexpr (F::is_optional) {
+        if (in.size() <= off) return true;  // absent: stays nullopt
+        if (in.size() < off + F::size) { err = {errc::bad_length, off}; return false; }
+        return decode_value<M, I, off>(member.emplace(), in, err);
+    } else {
+        return decode_value<M, I, off>(member, in, err);
+    }
+}
+
+template <class M, std::size_t Base, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, error& err,
+                                                    std::index_sequence<I...>) noexcept {
+    (void)m, (void)in, (void)err;  // messages without fields
+    return (decode_field<M, I, Base>(m, in, err) && ...);
+}
+
+template <class M, std::size_t I, std::size_t Off, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::uint8_t> in, error& err) noexcept {
+    constexpr const auto& f = field_v<M, I>;
+    using F = field_t<M, I>;
     using W = typename F::wire_type;
     if constexpr (W::kind == wire_kind::record) {
-        return decode_fields(table_v<E>, v, in, off, err);
+        return decode_record<E, Off>(v, in, err, std::make_index_sequence<field_count_v<E>>{});
     } else if constexpr (W::kind == wire_kind::text) {
         constexpr std::size_t n = text_traits<E>::size;
         std::size_t len = 0;
-        while (len < n && in[off + len] != 0) ++len;
+        while (len < n && in[Off + len] != 0) ++len;
         for (std::size_t i = len; i < n; ++i)
-            if (in[off + i] != 0) { err = {errc::bad_padding, off + i}; return false; }
+            if (in[Off + i] != 0) { err = {errc::bad_padding, Off + i}; return false; }
         std::array<char, n> chars{};
-        for (std::size_t i = 0; i < len; ++i) chars[i] = static_cast<char>(in[off + i]);
+        for (std::size_t i = 0; i < len; ++i) chars[i] = static_cast<char>(in[Off + i]);
         v.assign(std::string_view(chars.data(), len));
         return true;
     } else if constexpr (W::kind == wire_kind::tail) {
-        const std::size_t end = in.size() < off + F::size ? in.size() : off + F::size;
+        const std::size_t end = in.size() < Off + F::size ? in.size() : Off + F::size;
         v.clear();
-        (void)v.append(in.subspan(off, end > off ? end - off : 0));
+        (void)v.append(in.subspan(Off, end > Off ? end - Off : 0));
+        return true;
+    } else if constexpr (W::kind == wire_kind::f32le) {
+        v = load_le<float>(in.data() + Off);
         return true;
     } else {
         std::int64_t raw = 0;
-        if constexpr (W::kind == wire_kind::bits) {
-            raw = get_bits(in[off], W::lo, W::width);
-        } else if constexpr (W::kind == wire_kind::f32le) {
-            v = load_le<float>(in.data() + off);
-            return true;
-        } else {
-            raw = load_le<typename W::raw_type>(in.data() + off);
-        }
+        if constexpr (W::kind == wire_kind::bits) raw = get_bits(in[Off], W::lo, W::width);
+        else raw = load_le<typename W::raw_type>(in.data() + Off);
         if constexpr (std::is_enum_v<E>) {
             const auto e = static_cast<E>(raw);
-            if (!is_valid_enum(e)) { err = {errc::invalid_enum, off}; return false; }
+            if (!is_valid_enum(e)) { err = {errc::invalid_enum, Off}; return false; }
             v = e;
         } else {
-            if (raw < f.valid.min || raw > f.valid.max) { err = {errc::value_out_of_range, off}; return false; }
+            constexpr range valid = f.valid;
+            constexpr range full = [] {  // what the wire bytes can hold
+                if constexpr (W::kind == wire_kind::bits) return range{0, low_mask(W::width)};
+                else return range{std::numeric_limits<typename W::raw_type>::min(), std::numeric_limits<typename W::raw_type>::max()};
+            }();
+            if constexpr (valid.min > full.min || valid.max < full.max) {
+                if (raw < valid.min || raw > valid.max) { err = {errc::value_out_of_range, Off}; return false; }
+            }
             if constexpr (std::is_same_v<E, bool>) v = raw != 0;
             else v = static_cast<E>(raw);
         }
@@ -382,74 +411,89 @@ constexpr bool decode_element(const F& f, E& v, std::span<const std::uint8_t> in
     }
 }
 
-template <class F, class E>
-constexpr bool encode_element(const F& f, const E& v, std::span<std::uint8_t> out, std::size_t off, error& err) noexcept;
+// ---- encode
 
-template <class Table, class M>
-constexpr bool encode_fields(const Table& t, const M& m, std::span<std::uint8_t> out, std::size_t base, error& err) noexcept {
-    return std::apply(
-        [&](const auto&... f) {
-            auto one = [&](const auto& fd) -> bool {
-                using FD = std::remove_cvref_t<decltype(fd)>;
-                const std::size_t off = base + fd.offset;
-                const auto& member = m.*fd.member;
-                if constexpr (FD::is_optional) {
-                    if (!member) return true;
-                    const auto& value = *member;
-                    if constexpr (FD::is_array) {
-                        for (std::size_t i = 0; i < FD::count; ++i)
-                            if (!encode_element(fd, value[i], out, off + i * FD::element_size, err)) return false;
-                        return true;
-                    } else {
-                        return encode_element(fd, value, out, off, err);
-                    }
-                } else if constexpr (FD::is_array) {
-                    for (std::size_t i = 0; i < FD::count; ++i)
-                        if (!encode_element(fd, member[i], out, off + i * FD::element_size, err)) return false;
-                    return true;
-                } else {
-                    return encode_element(fd, member, out, off, err);
-                }
-            };
-            (void)one;  // unused for messages without fields
-            return (one(f) && ...);
-        },
-        t.fields);
+template <class M, std::size_t I, std::size_t Off, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr bool encode_element(const E& v, std::span<std::uint8_t> out, error& err) noexcept;
+
+template <class M, std::size_t Base, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool encode_record(const M& m, std::span<std::uint8_t> out, error& err,
+                                                    std::index_sequence<I...>) noexcept;
+
+template <class M, std::size_t I, std::size_t Off, class V, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE constexpr bool encode_array(const V& v, std::span<std::uint8_t> out, error& err,
+                                                   std::index_sequence<K...>) noexcept {
+    return (encode_element<M, I, Off + K * field_t<M, I>::element_size>(v[K], out, err) && ...);
 }
 
-template <class F, class E>
-constexpr bool encode_element(const F& f, const E& v, std::span<std::uint8_t> out, std::size_t off, error& err) noexcept {
+template <class M, std::size_t I, std::size_t Off, class V>
+ROBOWIRE_ALWAYS_INLINE constexpr bool encode_value(const V& v, std::span<std::uint8_t> out, error& err) noexcept {
+    using F = field_t<M, I>;
+    if constexpr (F::is_array) return encode_array<M, I, Off>(v, out, err, std::make_index_sequence<F::count>{});
+    else return encode_element<M, I, Off>(v, out, err);
+}
+
+template <class M, std::size_t I, std::size_t Base>
+ROBOWIRE_ALWAYS_INLINE constexpr bool encode_field(const M& m, std::span<std::uint8_t> out, error& err) noexcept {
+    constexpr const auto& f = field_v<M, I>;
+    using F = field_t<M, I>;
+    constexpr std::size_t off = Base + f.offset;
+    const auto& member = m.*(f.member);
+    if constexpr (F::is_optional) {
+        if (!member) return true;
+        return encode_value<M, I, off>(*member, out, err);
+    } else {
+        return encode_value<M, I, off>(member, out, err);
+    }
+}
+
+template <class M, std::size_t Base, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool encode_record(const M& m, std::span<std::uint8_t> out, error& err,
+                                                    std::index_sequence<I...>) noexcept {
+    (void)m, (void)out, (void)err;  // messages without fields
+    return (encode_field<M, I, Base>(m, out, err) && ...);
+}
+
+template <class M, std::size_t I, std::size_t Off, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr bool encode_element(const E& v, std::span<std::uint8_t> out, error& err) noexcept {
+    constexpr const auto& f = field_v<M, I>;
+    using F = field_t<M, I>;
     using W = typename F::wire_type;
     if constexpr (W::kind == wire_kind::record) {
-        return encode_fields(table_v<E>, v, out, off, err);
+        return encode_record<E, Off>(v, out, err, std::make_index_sequence<field_count_v<E>>{});
     } else if constexpr (W::kind == wire_kind::text) {
         const auto s = v.view();
         for (std::size_t i = 0; i < s.size(); ++i) {
-            if (s[i] == '\0') { err = {errc::value_out_of_range, off + i}; return false; }
-            out[off + i] = static_cast<std::uint8_t>(s[i]);
+            if (s[i] == '\0') { err = {errc::value_out_of_range, Off + i}; return false; }
+            out[Off + i] = static_cast<std::uint8_t>(s[i]);
         }
         return true;
     } else if constexpr (W::kind == wire_kind::tail) {
-        for (std::size_t i = 0; i < v.size(); ++i) out[off + i] = v[i];
+        for (std::size_t i = 0; i < v.size(); ++i) out[Off + i] = v[i];
         return true;
     } else if constexpr (W::kind == wire_kind::f32le) {
-        store_le<float>(out.data() + off, v);
+        store_le<float>(out.data() + Off, v);
         return true;
     } else {
         std::int64_t raw = 0;
         if constexpr (std::is_enum_v<E>) {
-            if (!is_valid_enum(v)) { err = {errc::invalid_enum, off}; return false; }
+            if (!is_valid_enum(v)) { err = {errc::invalid_enum, Off}; return false; }
             raw = static_cast<std::int64_t>(static_cast<std::underlying_type_t<E>>(v));
         } else {
             raw = static_cast<std::int64_t>(v);
-            if (raw < f.valid.min || raw > f.valid.max) { err = {errc::value_out_of_range, off}; return false; }
+            constexpr range valid = f.valid;
+            if constexpr (W::kind == wire_kind::bits || std::is_same_v<E, bool> ||
+                          valid.min > std::int64_t{std::numeric_limits<E>::min()} ||
+                          valid.max < std::int64_t{std::numeric_limits<E>::max()}) {
+                if (raw < valid.min || raw > valid.max) { err = {errc::value_out_of_range, Off}; return false; }
+            }
         }
         if constexpr (W::kind == wire_kind::bits) {
-            const auto mask = static_cast<std::uint8_t>(low_mask(W::width) << W::lo);
-            out[off] = static_cast<std::uint8_t>((static_cast<unsigned>(out[off]) & ~static_cast<unsigned>(mask)) |
+            constexpr auto mask = static_cast<unsigned>(low_mask(W::width) << W::lo);
+            out[Off] = static_cast<std::uint8_t>((static_cast<unsigned>(out[Off]) & ~mask) |
                                                  ((static_cast<unsigned>(raw) << W::lo) & mask));
         } else {
-            store_le<typename W::raw_type>(out.data() + off, static_cast<typename W::raw_type>(raw));
+            store_le<typename W::raw_type>(out.data() + Off, static_cast<typename W::raw_type>(raw));
         }
         return true;
     }
@@ -457,31 +501,33 @@ constexpr bool encode_element(const F& f, const E& v, std::span<std::uint8_t> ou
 
 // Bytes the encoding of m takes (optional blocks present, tail length), or
 // missing_field when an optional block is present but an earlier one is not.
-template <class M>
-constexpr result<std::size_t> encoded_size(const M& m) noexcept {
+template <class M, std::size_t... I>
+constexpr result<std::size_t> encoded_size(const M& m, std::index_sequence<I...>) noexcept {
     constexpr const auto& t = table_v<M>;
     std::size_t size = t.min_size();
     std::size_t first_absent = 0;
     bool absent_seen = false;
-    error err{};
-    auto one = [&](const auto& fd) -> bool {
-        using FD = std::remove_cvref_t<decltype(fd)>;
-        if constexpr (FD::is_optional) {
-            if (!(m.*fd.member)) {
-                if (!absent_seen) { absent_seen = true; first_absent = fd.offset; }
-                return true;
+    bool missing = false;
+    auto one = [&](auto index) {
+        constexpr std::size_t i = decltype(index)::value;
+        constexpr const auto& f = field_v<M, i>;
+        using F = field_t<M, i>;
+        if constexpr (F::is_optional) {
+            if (!(m.*(f.member))) {
+                if (!absent_seen) { absent_seen = true; first_absent = f.offset; }
+            } else if (absent_seen) {
+                missing = true;
+            } else if (f.end() > size) {
+                size = f.end();
             }
-            if (absent_seen) { err = {errc::missing_field, first_absent}; return false; }
-            if (fd.end() > size) size = fd.end();
-        } else if constexpr (FD::kind == wire_kind::tail) {
-            const std::size_t end = fd.offset + (m.*fd.member).size();
+        } else if constexpr (F::kind == wire_kind::tail) {
+            const std::size_t end = f.offset + (m.*(f.member)).size();
             if (end > size) size = end;
         }
-        return true;
     };
+    (one(std::integral_constant<std::size_t, I>{}), ...);
     (void)one;
-    const bool ok = std::apply([&](const auto&... f) { return (one(f) && ...); }, t.fields);
-    if (!ok) return err;
+    if (missing) return fail(errc::missing_field, first_absent);
     return size;
 }
 
@@ -492,29 +538,34 @@ constexpr result<std::size_t> encoded_size(const M& m) noexcept {
 template <described M>
 [[nodiscard]] constexpr result<M> decode(std::span<const std::uint8_t> in) noexcept {
     constexpr const auto& t = table_v<M>;
+    result<M> r{M{}};  // built in place: every return below returns r
     for (const auto& b : t.fixed)
-        if (b.offset < in.size() && in[b.offset] != b.value) return fail(b.code, b.offset);
-    if (in.size() < t.min_size()) return fail(errc::too_short, in.size());
-    if (in.size() > t.accepted_max()) return fail(errc::too_long, t.accepted_max());
-    M m{};
+        if (b.offset < in.size() && in[b.offset] != b.value) return r = fail(b.code, b.offset), r;
+    if (in.size() < t.min_size()) return r = fail(errc::too_short, in.size()), r;
+    if (in.size() > t.accepted_max()) return r = fail(errc::too_long, t.accepted_max()), r;
+    M& m = *r;
     error err{};
     const auto known = in.size() > t.extent() ? in.first(t.extent()) : in;
-    if (!detail::decode_fields(t, m, known, 0, err)) return err;
+    if (!detail::decode_record<M, 0>(m, known, err, std::make_index_sequence<detail::field_count_v<M>>{}))
+        return r = err, r;
     if constexpr (detail::reports_trailing<M>) m.ignored_trailing_bytes = in.size() - known.size();
-    return m;
+    return r;
 }
 
 // Encodes m; out-of-range values and invalid enums are errors (never truncated).
 template <described M>
 [[nodiscard]] constexpr result<bytes<max_size_v<M>>> encode(const M& m) noexcept {
     constexpr const auto& t = table_v<M>;
-    const auto size = detail::encoded_size(m);
-    if (!size) return size.error();
-    auto out = bytes<max_size_v<M>>::zeros(*size);
+    constexpr auto fields = std::make_index_sequence<detail::field_count_v<M>>{};
+    result<bytes<max_size_v<M>>> r{bytes<max_size_v<M>>{}};
+    const auto size = detail::encoded_size(m, fields);
+    if (!size) return r = size.error(), r;
+    auto& out = *r;
+    out.resize(*size);
     for (const auto& b : t.fixed) out[b.offset] = b.value;
     error err{};
-    if (!detail::encode_fields(t, m, out.span(), 0, err)) return err;
-    return out;
+    if (!detail::encode_record<M, 0>(m, out.span(), err, fields)) return r = err, r;
+    return r;
 }
 
 // Encodes m into a caller's buffer; returns the number of bytes written.

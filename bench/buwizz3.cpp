@@ -1,0 +1,375 @@
+// BuWizz3: status decode, command encode, decode_command over a mixed batch.
+// Baselines: memcpy of the same bytes (the floor) and the hand-written codec
+// a careful user would write (shifts and memcpy into a plain struct, with the
+// same length, command and range checks).
+#include <robowire/buwizz3.hpp>
+
+#include "common.hpp"
+
+namespace {
+namespace bw = robowire::buwizz3;
+
+// ---------------------------------------------------------------- inputs
+constexpr std::array<std::uint8_t, 68> status68{
+    0x01, 0x73, 0x50, 0x0A, 0x14, 0x1E, 0x28, 0x32, 0xC8, 0x23, 0xF0, 0xFF, 0xF0, 0x7F, 0x00, 0x08, 0x0B,
+    0x0C, 0x0D, 0x0E, 0x0F, 0x7D, 0x30, 0xEC, 0x4C, 0xFF, 0x60, 0x79, 0xFE, 0xFF, 0x31, 0x64, 0xB3, 0x00,
+    0x40, 0xE2, 0x01, 0x00, 0x4B, 0xFF, 0x01, 0x00, 0x01, 0x00, 0x00, 0x00, 0x4C, 0x7F, 0xFF, 0xFF, 0xFF,
+    0xFF, 0xFF, 0x7F, 0x9A, 0x99, 0x19, 0x3F, 0x00, 0x00, 0x20, 0xC0, 0x00, 0x00, 0x4C, 0x41, 0xF9, 0x2A};
+
+// `variants` different status reports (accelerometer and positions vary).
+std::vector<std::array<std::uint8_t, 68>> status_inputs() {
+    bench::rng r;
+    std::vector<std::array<std::uint8_t, 68>> v(bench::variants, status68);
+    for (auto& s : v)
+        for (std::size_t i : {10u, 11u, 12u, 13u, 26u, 27u, 34u, 35u, 54u, 55u}) s[i] = r.byte();
+    return v;
+}
+
+// ---------------------------------------------------------------- hand-written
+struct hw_status {
+    std::uint8_t flags, battery, current[6], temperature;
+    std::int16_t accel[3];
+    std::uint8_t bl_command, bl_code, bl_data[3], charge;
+    struct { std::uint8_t type; std::int8_t velocity; std::int16_t absolute; std::int32_t position; } motors[4];
+    bool has_pid;
+    float process_value, error, output;
+    std::int8_t integrator, motor_output;
+};
+inline std::int16_t rd16(const std::uint8_t* p) { return static_cast<std::int16_t>(p[0] | p[1] << 8); }
+inline std::int32_t rd32(const std::uint8_t* p) {
+    return static_cast<std::int32_t>(static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
+                                     static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24);
+}
+inline float rdf(const std::uint8_t* p) { float f; std::memcpy(&f, p, 4); return f; }
+inline void wr32(std::uint8_t* p, std::int32_t v) {
+    const auto u = static_cast<std::uint32_t>(v);
+    p[0] = static_cast<std::uint8_t>(u); p[1] = static_cast<std::uint8_t>(u >> 8);
+    p[2] = static_cast<std::uint8_t>(u >> 16); p[3] = static_cast<std::uint8_t>(u >> 24);
+}
+inline void wrf(std::uint8_t* p, float f) { std::memcpy(p, &f, 4); }
+
+bool hw_decode_status(const std::uint8_t* p, std::size_t n, hw_status& s) {
+    if (n < 54 || (n > 54 && n < 68) || n > 129 || p[0] != 0x01) return false;
+    s.flags = p[1];
+    s.battery = p[2];
+    std::memcpy(s.current, p + 3, 6);
+    s.temperature = p[9];
+    for (std::size_t i = 0; i < 3; ++i) s.accel[i] = rd16(p + 10 + 2 * i);
+    s.bl_command = p[16];
+    s.bl_code = p[17];
+    std::memcpy(s.bl_data, p + 18, 3);
+    s.charge = p[21];
+    for (std::size_t i = 0; i < 4; ++i) {
+        const std::uint8_t* m = p + 22 + 8 * i;
+        s.motors[i] = {m[0], static_cast<std::int8_t>(m[1]), rd16(m + 2), rd32(m + 4)};
+    }
+    s.has_pid = n >= 68;
+    if (s.has_pid) {
+        s.process_value = rdf(p + 54);
+        s.error = rdf(p + 58);
+        s.output = rdf(p + 62);
+        s.integrator = static_cast<std::int8_t>(p[66]);
+        s.motor_output = static_cast<std::int8_t>(p[67]);
+    }
+    return true;
+}
+
+template <std::size_t N>
+void status_decode_robowire(benchmark::State& state) {
+    const auto in = status_inputs();
+    std::size_t i = 0;
+    for (auto _ : state) {
+        auto r = robowire::decode<bw::status>(std::span(in[i++ % bench::variants]).first(N));
+        benchmark::DoNotOptimize(r);
+    }
+}
+template <std::size_t N>
+void status_decode_handwritten(benchmark::State& state) {
+    const auto in = status_inputs();
+    std::size_t i = 0;
+    hw_status s{};
+    for (auto _ : state) {
+        bool ok = hw_decode_status(in[i++ % bench::variants].data(), N, s);
+        benchmark::DoNotOptimize(ok);
+        benchmark::DoNotOptimize(s);
+    }
+}
+template <std::size_t N>
+void status_decode_memcpy(benchmark::State& state) {
+    const auto in = status_inputs();
+    std::size_t i = 0;
+    std::array<std::uint8_t, 68> out{};
+    for (auto _ : state) {
+        std::memcpy(out.data(), in[i++ % bench::variants].data(), N);
+        benchmark::DoNotOptimize(out);
+    }
+}
+
+// ---- encoders: 0x30, 0x31, 0x53
+std::vector<bw::set_motor_data> motor_inputs() {
+    bench::rng r;
+    std::vector<bw::set_motor_data> v(bench::variants);
+    for (auto& m : v) {
+        for (auto& p : m.power) p = static_cast<std::int8_t>(static_cast<int>(r.next() % 255) - 127);
+        m.brake_flags = r.byte() & 0x3F;
+        m.lut_disable_flags = r.byte() & 0x3F;
+    }
+    return v;
+}
+std::vector<bw::set_motor_data_extended> motor_ext_inputs() {
+    bench::rng r;
+    std::vector<bw::set_motor_data_extended> v(bench::variants);
+    for (auto& m : v) {
+        for (auto& x : m.reference) x = static_cast<std::int32_t>(r.next());
+        for (auto& p : m.power) p = static_cast<std::int8_t>(static_cast<int>(r.next() % 255) - 127);
+        m.brake_flags = r.byte() & 0x3F;
+        m.lut_disable_flags = r.byte() & 0x3F;
+    }
+    return v;
+}
+std::vector<bw::set_pid_parameters> pid_inputs() {
+    bench::rng r;
+    std::vector<bw::set_pid_parameters> v(bench::variants);
+    for (auto& m : v) {
+        m = (r.next() & 1) ? bw::position_servo_preset(r.byte() & 3) : bw::speed_servo_preset(r.byte() & 3);
+        m.kp = static_cast<float>(r.next() % 1000) / 1000.0f;
+    }
+    return v;
+}
+
+bool hw_encode_motor(const bw::set_motor_data& m, std::uint8_t* out) {
+    out[0] = 0x30;
+    for (std::size_t i = 0; i < 6; ++i) {
+        if (m.power[i] == -128) return false;
+        out[1 + i] = static_cast<std::uint8_t>(m.power[i]);
+    }
+    if ((m.brake_flags | m.lut_disable_flags) & 0xC0) return false;
+    out[7] = m.brake_flags;
+    out[8] = m.lut_disable_flags;
+    return true;
+}
+bool hw_encode_motor_ext(const bw::set_motor_data_extended& m, std::uint8_t* out) {
+    out[0] = 0x31;
+    for (std::size_t i = 0; i < 4; ++i) wr32(out + 1 + 4 * i, m.reference[i]);
+    for (std::size_t i = 0; i < 2; ++i) {
+        if (m.power[i] == -128) return false;
+        out[17 + i] = static_cast<std::uint8_t>(m.power[i]);
+    }
+    if ((m.brake_flags | m.lut_disable_flags) & 0xC0) return false;
+    out[19] = m.brake_flags;
+    out[20] = m.lut_disable_flags;
+    return true;
+}
+bool hw_encode_pid(const bw::set_pid_parameters& m, std::uint8_t* out) {
+    if (m.port > 3 || m.lim_out < 1 || m.deadband_out < 0 || m.deadband_out_boost < 0) return false;
+    const auto mode = static_cast<std::uint8_t>(m.mode);
+    if (mode != 0x00 && mode != 0x10 && (mode < 0x14 || mode > 0x16)) return false;
+    out[0] = 0x53;
+    out[1] = m.port;
+    const float f[8] = {m.out_lp, m.d_lp, m.speed_lp, m.kp, m.ki, m.kd, m.lim_i, m.reference_rate_limit};
+    for (std::size_t i = 0; i < 8; ++i) wrf(out + 2 + 4 * i, f[i]);
+    out[34] = static_cast<std::uint8_t>(m.lim_out);
+    out[35] = static_cast<std::uint8_t>(m.deadband_out);
+    out[36] = static_cast<std::uint8_t>(m.deadband_out_boost);
+    out[37] = mode;
+    return true;
+}
+
+template <class M, class Make>
+void encode_robowire(benchmark::State& state, Make make) {
+    const auto in = make();
+    std::size_t i = 0;
+    for (auto _ : state) {
+        auto r = robowire::encode(in[i++ % bench::variants]);
+        benchmark::DoNotOptimize(r);
+    }
+}
+template <class M, class Make, class Enc>
+void encode_handwritten(benchmark::State& state, Make make, Enc enc) {
+    const auto in = make();
+    std::size_t i = 0;
+    std::array<std::uint8_t, 64> out{};
+    for (auto _ : state) {
+        bool ok = enc(in[i++ % bench::variants], out.data());
+        benchmark::DoNotOptimize(ok);
+        benchmark::DoNotOptimize(out);
+    }
+}
+
+void encode30_robowire(benchmark::State& s) { encode_robowire<bw::set_motor_data>(s, motor_inputs); }
+void encode30_handwritten(benchmark::State& s) { encode_handwritten<bw::set_motor_data>(s, motor_inputs, hw_encode_motor); }
+void encode31_robowire(benchmark::State& s) { encode_robowire<bw::set_motor_data_extended>(s, motor_ext_inputs); }
+void encode31_handwritten(benchmark::State& s) {
+    encode_handwritten<bw::set_motor_data_extended>(s, motor_ext_inputs, hw_encode_motor_ext);
+}
+void encode53_robowire(benchmark::State& s) { encode_robowire<bw::set_pid_parameters>(s, pid_inputs); }
+void encode53_handwritten(benchmark::State& s) { encode_handwritten<bw::set_pid_parameters>(s, pid_inputs, hw_encode_pid); }
+
+// ---- decode_command over every command
+const std::vector<std::vector<std::uint8_t>>& command_batch() {
+    static const std::vector<std::vector<std::uint8_t>> batch = [] {
+        std::vector<std::vector<std::uint8_t>> v;
+        auto add = [&](const auto& m) {
+            const auto b = robowire::encode(m).value();
+            v.emplace_back(b.begin(), b.end());
+        };
+        add(bw::set_device_name{"MyBrick"});
+        add(bw::set_motion_wakeup{true, 300, 3600});
+        add(bw::set_accel_calibration{{1, -1, 0.5f, 0.6f, -2.5f, 0}});
+        add(bw::read_accel_calibration{});
+        add(bw::set_motor_data{{127, -127, 0, 64, -64, 1}, 0x21, 0x3F});
+        add(bw::set_motor_data_extended{{1000, -1000, 0, 0x12345678}, {-127, 100}, 3, 0});
+        add(bw::set_data_period{50});
+        add(bw::set_ramp_rates{{1, 2, 3, 4, 5, 6}, {0, 13, 100, 255, 7, 8}});
+        add(bw::set_motor_timeout{11});
+        add(bw::activate_watchdog{5});
+        add(bw::set_led_status{std::array<bw::rgb, 4>{}, std::array<bw::blink, 4>{{{1, 15}, {15, 0}, {0, 8}, {5, 5}}}});
+        add(bw::set_accel_lpf{bw::lpf_setting::hz_6_25});
+        add(bw::set_current_limits{{50, 50, 50, 50, 100, 100}});
+        add(bw::set_uart_baudrate{2, 115200});
+        add(bw::set_pu_port_function{});
+        add(bw::enable_pid_reporting{3});
+        add(bw::set_servo_reference{{-1, 0, 90, 0x7FFFFFFF}});
+        add(bw::position_servo_preset(0));
+        add(bw::activate_shelf_mode{});
+        add(bw::check_charger_settings{});
+        return v;
+    }();
+    return batch;
+}
+
+// A careful user's dispatcher: tagged union, same checks.
+struct hw_command {
+    std::uint8_t kind;
+    union {
+        char name[13];
+        struct { bool enabled; std::uint32_t idle, sleep; } wakeup;
+        float factors[6];
+        struct { std::int8_t power[6]; std::uint8_t brake, lut; } motor;
+        struct { std::int32_t ref[4]; std::int8_t power[2]; std::uint8_t brake, lut; } motor_ext;
+        std::uint8_t one;
+        std::uint8_t ramps[12];
+        struct { std::uint8_t n; std::uint8_t bytes[16]; } led;
+        std::uint8_t limits[6];
+        struct { std::uint8_t channel; std::uint32_t baud; } uart;
+        std::uint8_t functions[4];
+        std::int32_t reference[4];
+        struct { std::uint8_t port; float f[8]; std::int8_t lim_out, db, boost; std::uint8_t mode; } pid;
+    };
+};
+inline bool valid_function(std::uint8_t f) { return f == 0 || f == 0x10 || (f >= 0x14 && f <= 0x16); }
+bool hw_decode_command(const std::uint8_t* p, std::size_t n, hw_command& c) {
+    if (n == 0) return false;
+    c.kind = p[0];
+    switch (p[0]) {
+    case 0x20: {
+        if (n != 13) return false;
+        std::size_t len = 0;
+        while (len < 12 && p[1 + len]) ++len;
+        for (std::size_t i = len; i < 12; ++i) if (p[1 + i]) return false;
+        std::memcpy(c.name, p + 1, 12);
+        c.name[12] = 0;
+        return true;
+    }
+    case 0x21:
+        if (n != 10 || p[1] > 1) return false;
+        c.wakeup = {p[1] != 0, static_cast<std::uint32_t>(rd32(p + 2)), static_cast<std::uint32_t>(rd32(p + 6))};
+        return c.wakeup.idle >= 10;
+    case 0x22:
+        if (n != 25) return false;
+        for (std::size_t i = 0; i < 6; ++i) c.factors[i] = rdf(p + 1 + 4 * i);
+        return true;
+    case 0x23: case 0xA1: case 0xAC: return n == 1;
+    case 0x30:
+        if (n != 9) return false;
+        for (std::size_t i = 0; i < 6; ++i) { if (p[1 + i] == 0x80) return false; c.motor.power[i] = static_cast<std::int8_t>(p[1 + i]); }
+        if ((p[7] | p[8]) & 0xC0) return false;
+        c.motor.brake = p[7];
+        c.motor.lut = p[8];
+        return true;
+    case 0x31:
+        if (n != 21) return false;
+        for (std::size_t i = 0; i < 4; ++i) c.motor_ext.ref[i] = rd32(p + 1 + 4 * i);
+        for (std::size_t i = 0; i < 2; ++i) { if (p[17 + i] == 0x80) return false; c.motor_ext.power[i] = static_cast<std::int8_t>(p[17 + i]); }
+        if ((p[19] | p[20]) & 0xC0) return false;
+        c.motor_ext.brake = p[19];
+        c.motor_ext.lut = p[20];
+        return true;
+    case 0x32: if (n != 2 || p[1] < 20) return false; c.one = p[1]; return true;
+    case 0x33: if (n != 13) return false; std::memcpy(c.ramps, p + 1, 12); return true;
+    case 0x34: if (n != 2 || p[1] == 255) return false; c.one = p[1]; return true;
+    case 0x35: if (n != 2) return false; c.one = p[1]; return true;
+    case 0x36:
+        if (n != 1 && n != 13 && n != 17) return false;
+        c.led.n = static_cast<std::uint8_t>(n - 1);
+        std::memcpy(c.led.bytes, p + 1, n - 1);
+        return true;
+    case 0x37: if (n != 2 || (p[1] > 3 && (p[1] < 8 || p[1] > 11))) return false; c.one = p[1]; return true;
+    case 0x38: if (n != 7) return false; std::memcpy(c.limits, p + 1, 6); return true;
+    case 0x40: if (n != 7 || p[1] != 0x10) return false; c.uart = {p[2], static_cast<std::uint32_t>(rd32(p + 3))}; return true;
+    case 0x50:
+        if (n != 5) return false;
+        for (std::size_t i = 0; i < 4; ++i) { if (!valid_function(p[1 + i])) return false; c.functions[i] = p[1 + i]; }
+        return true;
+    case 0x51: if (n != 2 || p[1] > 4) return false; c.one = p[1]; return true;
+    case 0x52: if (n != 17) return false; for (std::size_t i = 0; i < 4; ++i) c.reference[i] = rd32(p + 1 + 4 * i); return true;
+    case 0x53:
+        if (n != 38 || p[1] > 3) return false;
+        c.pid.port = p[1];
+        for (std::size_t i = 0; i < 8; ++i) c.pid.f[i] = rdf(p + 2 + 4 * i);
+        c.pid.lim_out = static_cast<std::int8_t>(p[34]);
+        c.pid.db = static_cast<std::int8_t>(p[35]);
+        c.pid.boost = static_cast<std::int8_t>(p[36]);
+        c.pid.mode = p[37];
+        return c.pid.lim_out >= 1 && c.pid.db >= 0 && c.pid.boost >= 0 && valid_function(p[37]);
+    default: return false;
+    }
+}
+
+void commands_robowire(benchmark::State& state) {
+    const auto& batch = command_batch();
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const auto& b = batch[i++ % batch.size()];
+        auto r = bw::decode_command(b);
+        benchmark::DoNotOptimize(r);
+    }
+}
+void commands_handwritten(benchmark::State& state) {
+    const auto& batch = command_batch();
+    std::size_t i = 0;
+    hw_command c{};
+    for (auto _ : state) {
+        const auto& b = batch[i++ % batch.size()];
+        bool ok = hw_decode_command(b.data(), b.size(), c);
+        benchmark::DoNotOptimize(ok);
+        benchmark::DoNotOptimize(c);
+    }
+}
+void commands_memcpy(benchmark::State& state) {
+    const auto& batch = command_batch();
+    std::size_t i = 0;
+    std::array<std::uint8_t, 64> out{};
+    for (auto _ : state) {
+        const auto& b = batch[i++ % batch.size()];
+        std::memcpy(out.data(), b.data(), b.size());
+        benchmark::DoNotOptimize(out);
+    }
+}
+}  // namespace
+
+BENCHMARK(status_decode_robowire<68>)->Name("buwizz3.status68_decode:robowire");
+BENCHMARK(status_decode_handwritten<68>)->Name("buwizz3.status68_decode:handwritten");
+BENCHMARK(status_decode_memcpy<68>)->Name("buwizz3.status68_decode:memcpy");
+BENCHMARK(status_decode_robowire<54>)->Name("buwizz3.status54_decode:robowire");
+BENCHMARK(status_decode_handwritten<54>)->Name("buwizz3.status54_decode:handwritten");
+BENCHMARK(status_decode_memcpy<54>)->Name("buwizz3.status54_decode:memcpy");
+BENCHMARK(encode30_robowire)->Name("buwizz3.encode_0x30:robowire");
+BENCHMARK(encode30_handwritten)->Name("buwizz3.encode_0x30:handwritten");
+BENCHMARK(encode31_robowire)->Name("buwizz3.encode_0x31:robowire");
+BENCHMARK(encode31_handwritten)->Name("buwizz3.encode_0x31:handwritten");
+BENCHMARK(encode53_robowire)->Name("buwizz3.encode_0x53:robowire");
+BENCHMARK(encode53_handwritten)->Name("buwizz3.encode_0x53:handwritten");
+BENCHMARK(commands_robowire)->Name("buwizz3.decode_command_mixed:robowire");
+BENCHMARK(commands_handwritten)->Name("buwizz3.decode_command_mixed:handwritten");
+BENCHMARK(commands_memcpy)->Name("buwizz3.decode_command_mixed:memcpy");

@@ -1,0 +1,22 @@
+// Shared by the benchmarks: a rotating set of inputs, so that no iteration
+// sees a constant, and a deterministic generator.
+#pragma once
+
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace bench {
+
+inline constexpr std::size_t variants = 64;  // inputs per benchmark, used round-robin
+
+struct rng {
+    std::uint32_t s = 0x9E3779B9u;
+    std::uint32_t next() { s ^= s << 13; s ^= s >> 17; s ^= s << 5; return s; }
+    std::uint8_t byte() { return static_cast<std::uint8_t>(next()); }
+};
+
+}  // namespace bench

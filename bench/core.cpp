@@ -1,0 +1,90 @@
+// Core primitives: little-endian loads vs memcpy, hex formatting vs a plain loop.
+#include <robowire/core.hpp>
+
+#include "common.hpp"
+
+namespace {
+std::vector<std::uint8_t> random_bytes(std::size_t n) {
+    bench::rng r;
+    std::vector<std::uint8_t> v(n);
+    for (auto& b : v) b = r.byte();
+    return v;
+}
+
+void load_u32_robowire(benchmark::State& state) {
+    const auto buf = random_bytes(4096 + 4);
+    std::size_t i = 0;
+    std::uint32_t sum = 0;
+    for (auto _ : state) {
+        sum += robowire::load_le<std::uint32_t>(buf.data() + (i++ & 4095));
+        benchmark::DoNotOptimize(sum);
+    }
+}
+void load_u32_memcpy(benchmark::State& state) {
+    const auto buf = random_bytes(4096 + 4);
+    std::size_t i = 0;
+    std::uint32_t sum = 0;
+    for (auto _ : state) {
+        std::uint32_t v;
+        std::memcpy(&v, buf.data() + (i++ & 4095), 4);  // little-endian host
+        sum += v;
+        benchmark::DoNotOptimize(sum);
+    }
+}
+void load_f32_robowire(benchmark::State& state) {
+    const auto buf = random_bytes(4096 + 4);
+    std::size_t i = 0;
+    float sum = 0;
+    for (auto _ : state) {
+        sum += robowire::load_le<float>(buf.data() + (i++ & 4095));
+        benchmark::DoNotOptimize(sum);
+    }
+}
+void load_f32_memcpy(benchmark::State& state) {
+    const auto buf = random_bytes(4096 + 4);
+    std::size_t i = 0;
+    float sum = 0;
+    for (auto _ : state) {
+        float v;
+        std::memcpy(&v, buf.data() + (i++ & 4095), 4);
+        sum += v;
+        benchmark::DoNotOptimize(sum);
+    }
+}
+void hex_robowire(benchmark::State& state) {
+    const auto buf = random_bytes(68 * bench::variants);
+    std::array<char, 3 * 68> out{};
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const auto n = robowire::to_hex(std::span(buf).subspan(68 * (i++ % bench::variants), 68), out);
+        benchmark::DoNotOptimize(n);
+        benchmark::ClobberMemory();
+    }
+    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * 68);
+}
+void hex_handwritten(benchmark::State& state) {
+    const auto buf = random_bytes(68 * bench::variants);
+    std::array<char, 3 * 68> out{};
+    static const char digits[] = "0123456789ABCDEF";
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const std::uint8_t* p = buf.data() + 68 * (i++ % bench::variants);
+        char* o = out.data();
+        for (std::size_t k = 0; k < 68; ++k) {
+            if (k) *o++ = ' ';
+            *o++ = digits[p[k] >> 4];
+            *o++ = digits[p[k] & 15];
+        }
+        benchmark::DoNotOptimize(o);
+        benchmark::ClobberMemory();
+    }
+    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * 68);
+}
+}  // namespace
+
+BENCHMARK(load_u32_robowire)->Name("core.load_u32:robowire");
+BENCHMARK(load_u32_memcpy)->Name("core.load_u32:memcpy");
+BENCHMARK(load_f32_robowire)->Name("core.load_f32:robowire");
+BENCHMARK(load_f32_memcpy)->Name("core.load_f32:memcpy");
+BENCHMARK(hex_robowire)->Name("core.to_hex_68:robowire");
+BENCHMARK(hex_handwritten)->Name("core.to_hex_68:handwritten");

@@ -1,0 +1,195 @@
+// OSP: per-message decode and dispatch; scanner throughput on clean streams,
+// 30 % noise and pure noise, fed in 1-byte, 64-byte and 4 KiB chunks.
+// Baselines: hand-written decoders; a byte-at-a-time state machine of the
+// usual kind (as MAVLink-style parsers work); memchr for start bytes (floor).
+#include <robowire/osp.hpp>
+
+#include "common.hpp"
+
+namespace {
+namespace osp = robowire::osp;
+using frame10 = std::array<std::uint8_t, 10>;
+
+std::vector<frame10> frames() {
+    bench::rng r;
+    std::vector<frame10> v;
+    const std::uint8_t keys[][2] = {{0, 0x11}, {1, 0x02}, {2, 0x11}, {2, 0x12}, {2, 0x13}, {2, 0x14}};
+    for (std::size_t i = 0; i < bench::variants; ++i) {
+        const auto& k = keys[i % 6];
+        frame10 f{0xFF, 0xAA, k[0], k[1], r.byte(), r.byte(), 0, 0, 0x55, 0x77};
+        if (k[1] == 0x11 && k[0] == 0) f[4] = static_cast<std::uint8_t>(1 + r.next() % 3);
+        if (k[1] == 0x14) { f[4] = static_cast<std::uint8_t>(r.next() % 5); f[5] &= 0x0F; }
+        v.push_back(f);
+    }
+    return v;
+}
+std::vector<frame10> voltage_frames() {
+    bench::rng r;
+    std::vector<frame10> v;
+    for (std::size_t i = 0; i < bench::variants; ++i) v.push_back({0xFF, 0xAA, 2, 0x12, r.byte(), r.byte(), 0, 0, 0x55, 0x77});
+    return v;
+}
+
+bool hw_voltage(const std::uint8_t* p, std::size_t n, std::int16_t& cv) {
+    if (n != 10 || p[0] != 0xFF || p[1] != 0xAA || p[2] != 2 || p[3] != 0x12 || p[8] != 0x55 || p[9] != 0x77) return false;
+    cv = static_cast<std::int16_t>(p[4] | p[5] << 8);
+    return true;
+}
+struct hw_msg { std::uint8_t dev, cmd; std::uint16_t a; std::uint8_t b; };
+bool hw_decode_any(const std::uint8_t* p, std::size_t n, hw_msg& m) {
+    if (n != 10 || p[0] != 0xFF || p[1] != 0xAA || p[8] != 0x55 || p[9] != 0x77) return false;
+    m.dev = p[2];
+    m.cmd = p[3];
+    switch (p[2] << 8 | p[3]) {
+    case 0x0001: case 0x0201: case 0x0202: case 0x0203: case 0x0204: return true;
+    case 0x0011: m.b = p[4]; return p[4] <= 3;
+    case 0x0102: m.b = p[4]; m.a = static_cast<std::uint16_t>(p[5] | p[6] << 8); return true;
+    case 0x0211: case 0x0212: case 0x0213: m.a = static_cast<std::uint16_t>(p[4] | p[5] << 8); return true;
+    case 0x0214: m.b = p[4]; m.a = p[5]; return p[4] <= 4;
+    default: return false;
+    }
+}
+
+void voltage_robowire(benchmark::State& state) {
+    const auto v = voltage_frames();
+    std::size_t i = 0;
+    for (auto _ : state) {
+        auto r = robowire::decode<osp::obp1::voltage>(v[i++ % bench::variants]);
+        benchmark::DoNotOptimize(r);
+    }
+}
+void voltage_handwritten(benchmark::State& state) {
+    const auto v = voltage_frames();
+    std::size_t i = 0;
+    std::int16_t cv = 0;
+    for (auto _ : state) {
+        bool ok = hw_voltage(v[i++ % bench::variants].data(), 10, cv);
+        benchmark::DoNotOptimize(ok);
+        benchmark::DoNotOptimize(cv);
+    }
+}
+void dispatch_robowire(benchmark::State& state) {
+    const auto v = frames();
+    std::size_t i = 0;
+    for (auto _ : state) {
+        auto r = osp::decode(v[i++ % bench::variants]);
+        benchmark::DoNotOptimize(r);
+    }
+}
+void dispatch_handwritten(benchmark::State& state) {
+    const auto v = frames();
+    std::size_t i = 0;
+    hw_msg m{};
+    for (auto _ : state) {
+        bool ok = hw_decode_any(v[i++ % bench::variants].data(), 10, m);
+        benchmark::DoNotOptimize(ok);
+        benchmark::DoNotOptimize(m);
+    }
+}
+
+// ---- streams (64 KiB)
+constexpr std::size_t stream_size = 64 * 1024;
+enum class kind { clean, noisy, noise };
+std::vector<std::uint8_t> stream(kind k) {
+    bench::rng r;
+    const auto fs = frames();
+    std::vector<std::uint8_t> s;
+    s.reserve(stream_size + 16);
+    std::size_t i = 0;
+    while (s.size() < stream_size) {
+        if (k == kind::noise || (k == kind::noisy && r.next() % 100 < 30 * 10 / 17)) {
+            // noise bytes: 30 % of the stream overall (runs of 3 bytes, weighted for that share)
+            for (int n = 0; n < 3; ++n) s.push_back(r.byte());
+        } else {
+            const auto& f = fs[i++ % fs.size()];
+            s.insert(s.end(), f.begin(), f.end());
+        }
+    }
+    s.resize(stream_size);
+    return s;
+}
+
+void scan_robowire(benchmark::State& state, kind k) {
+    const auto s = stream(k);
+    const auto chunk = static_cast<std::size_t>(state.range(0));
+    std::uint64_t found = 0;
+    for (auto _ : state) {
+        osp::scanner sc;
+        for (std::size_t i = 0; i < s.size(); i += chunk)
+            sc.feed(std::span(s).subspan(i, std::min(chunk, s.size() - i)), [&](osp::scanner::frame_bytes f) {
+                found += f[3];
+            });
+        benchmark::DoNotOptimize(found);
+        state.counters["frames"] = static_cast<double>(sc.frames());
+    }
+    state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(s.size()));
+}
+
+// The usual byte-at-a-time parser: a state per expected byte, restart on mismatch.
+struct state_machine {
+    enum st : std::uint8_t { st1, st2, body, en1, en2 } state = st1;
+    std::uint8_t buf[10] = {};
+    std::uint8_t n = 0;
+    template <class F>
+    void push(std::uint8_t b, F&& on_frame) {
+        switch (state) {
+        case st1: if (b == 0xFF) { buf[0] = b; state = st2; } break;
+        case st2:
+            if (b == 0xAA) { buf[1] = b; n = 2; state = body; }
+            else state = b == 0xFF ? st2 : st1;
+            break;
+        case body: buf[n++] = b; if (n == 8) state = en1; break;
+        case en1: if (b == 0x55) { buf[8] = b; state = en2; } else state = b == 0xFF ? st2 : st1; break;
+        case en2:
+            if (b == 0x77) { buf[9] = b; on_frame(buf); }
+            state = (b == 0xFF) ? st2 : st1;
+            break;
+        }
+    }
+};
+void scan_state_machine(benchmark::State& state, kind k) {
+    const auto s = stream(k);
+    const auto chunk = static_cast<std::size_t>(state.range(0));
+    std::uint64_t found = 0, frames_seen = 0;
+    for (auto _ : state) {
+        state_machine sm;
+        frames_seen = 0;
+        for (std::size_t i = 0; i < s.size(); i += chunk) {
+            const std::size_t end = std::min(i + chunk, s.size());
+            for (std::size_t j = i; j < end; ++j) sm.push(s[j], [&](const std::uint8_t* f) { found += f[3]; ++frames_seen; });
+        }
+        benchmark::DoNotOptimize(found);
+    }
+    state.counters["frames"] = static_cast<double>(frames_seen);
+    state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(s.size()));
+}
+void scan_memchr(benchmark::State& state, kind k) {
+    const auto s = stream(k);
+    const auto chunk = static_cast<std::size_t>(state.range(0));
+    for (auto _ : state) {
+        std::size_t starts = 0;
+        for (std::size_t i = 0; i < s.size(); i += chunk) {
+            const std::uint8_t* p = s.data() + i;
+            const std::uint8_t* end = s.data() + std::min(i + chunk, s.size());
+            while ((p = static_cast<const std::uint8_t*>(std::memchr(p, 0xFF, static_cast<std::size_t>(end - p))))) {
+                ++starts;
+                ++p;
+            }
+        }
+        benchmark::DoNotOptimize(starts);
+    }
+    state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(s.size()));
+}
+}  // namespace
+
+BENCHMARK(voltage_robowire)->Name("osp.decode_voltage:robowire");
+BENCHMARK(voltage_handwritten)->Name("osp.decode_voltage:handwritten");
+BENCHMARK(dispatch_robowire)->Name("osp.decode_dispatch:robowire");
+BENCHMARK(dispatch_handwritten)->Name("osp.decode_dispatch:handwritten");
+#define ROBOWIRE_SCAN(K)                                                                                    \
+    BENCHMARK_CAPTURE(scan_robowire, K, kind::K)->Name("osp.scan_" #K ":robowire")->Arg(1)->Arg(64)->Arg(4096); \
+    BENCHMARK_CAPTURE(scan_state_machine, K, kind::K)->Name("osp.scan_" #K ":bytewise")->Arg(1)->Arg(64)->Arg(4096); \
+    BENCHMARK_CAPTURE(scan_memchr, K, kind::K)->Name("osp.scan_" #K ":memchr")->Arg(1)->Arg(64)->Arg(4096);
+ROBOWIRE_SCAN(clean)
+ROBOWIRE_SCAN(noisy)
+ROBOWIRE_SCAN(noise)
