@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string_view>
 #include <type_traits>
-#include <utility>
+#include <utility>  // std::in_place_t, std::move
 
 namespace robowire {
 
@@ -78,6 +78,9 @@ public:
     constexpr result(const T& val) noexcept(std::is_nothrow_copy_constructible_v<T>) : value_(val), ok_(true) {}
     constexpr result(T&& val) noexcept(std::is_nothrow_move_constructible_v<T>) : value_(std::move(val)), ok_(true) {}
     constexpr result(robowire::error e) noexcept : error_(e), ok_(false) {}
+    // A value-holding result whose value is default-initialised (no block
+    // clear): for codecs that then write every member.
+    constexpr explicit result(std::in_place_t) noexcept(std::is_nothrow_default_constructible_v<T>) : ok_(true) {}
     // Turns this result into an error.
     constexpr result& operator=(robowire::error e) noexcept {
         error_ = e;
@@ -108,7 +111,7 @@ private:
     constexpr void check(bool want_value) const noexcept {
         if (ok_ != want_value) detail::bad_result_access();
     }
-    T value_{};
+    T value_;  // default member initialisers apply; no value-initialising block clear
     robowire::error error_{};
     bool ok_ = false;
 };

@@ -538,7 +538,7 @@ constexpr result<std::size_t> encoded_size(const M& m, std::index_sequence<I...>
 template <described M>
 [[nodiscard]] constexpr result<M> decode(std::span<const std::uint8_t> in) noexcept {
     constexpr const auto& t = table_v<M>;
-    result<M> r{M{}};  // built in place: every return below returns r
+    result<M> r{std::in_place};  // built in place: every return below returns r
     for (const auto& b : t.fixed)
         if (b.offset < in.size() && in[b.offset] != b.value) return r = fail(b.code, b.offset), r;
     if (in.size() < t.min_size()) return r = fail(errc::too_short, in.size()), r;
@@ -557,7 +557,7 @@ template <described M>
 [[nodiscard]] constexpr result<bytes<max_size_v<M>>> encode(const M& m) noexcept {
     constexpr const auto& t = table_v<M>;
     constexpr auto fields = std::make_index_sequence<detail::field_count_v<M>>{};
-    result<bytes<max_size_v<M>>> r{bytes<max_size_v<M>>{}};
+    result<bytes<max_size_v<M>>> r{std::in_place};
     const auto size = detail::encoded_size(m, fields);
     if (!size) return r = size.error(), r;
     auto& out = *r;
