@@ -4,7 +4,9 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <optional>
+#include <type_traits>
 #include <span>
 
 #include "frame.hpp"
@@ -28,26 +30,38 @@ public:
         const std::size_t n = chunk.size();
         std::size_t i = 0;
         while (i < n) {
-            if (len_ != 0) {  // finish the partial candidate first
-                if (auto f = push(p[i++])) on_frame(frame_bytes(f->data(), frame_size));
+            if (len_ != 0) {  // a partial candidate: complete it in one go if the chunk has the rest
+                const std::size_t had = len_, need = frame_size - had;
+                if (n - i >= need) {
+                    for (std::size_t k = 0; k < need; ++k) buf_[had + k] = p[i + k];
+                    bool ok = true;
+                    for (std::size_t k = had; k < frame_size && ok; ++k) ok = prefix_ok(k);
+                    if (ok) {
+                        len_ = 0;
+                        ++frames_;
+                        i += need;
+                        on_frame(frame_bytes(buf_.data(), frame_size));
+                        continue;
+                    }
+                }
+                push_byte(p[i++], on_frame);
                 continue;
             }
-            // Fast path: search the chunk itself for a start byte.
-            std::size_t j = i;
-            while (j < n && p[j] != start1) ++j;
-            skipped_ += j - i;
-            i = j;
-            if (i == n) break;
-            if (n - i < frame_size) {  // not enough left: keep the tail as a candidate
-                while (i < n)
-                    if (auto f = push(p[i++])) on_frame(frame_bytes(f->data(), frame_size));
+            if (n - i < frame_size) {  // a short tail: byte by byte
+                while (i < n) push_byte(p[i++], on_frame);
                 break;
             }
-            if (p[i + 1] == start2 && p[i + 8] == end1 && p[i + 9] == end2) {
+            if (p[i] != start1) {  // skip noise up to the next start byte
+                const std::size_t start = find_start(p, i + 1, n);
+                skipped_ += start - i;
+                i = start;
+                if (n - i < frame_size) continue;
+            }
+            if (p[i + 1] == start2 && p[i + 8] == end1 && p[i + 9] == end2) {  // a whole frame in the chunk
                 ++frames_;
                 on_frame(frame_bytes(p + i, frame_size));
                 i += frame_size;
-            } else {
+            } else {  // false start: resume at the next byte
                 ++false_starts_;
                 ++skipped_;
                 ++i;
@@ -57,19 +71,35 @@ public:
 
     // Pushes one byte; returns the frame it completes, if any.
     constexpr std::optional<std::array<std::uint8_t, frame_size>> push(std::uint8_t b) noexcept {
+        std::optional<std::array<std::uint8_t, frame_size>> out;
+        push_byte(b, [&](frame_bytes f) {
+            out.emplace();
+            for (std::size_t k = 0; k < frame_size; ++k) (*out)[k] = f[k];
+        });
+        return out;
+    }
+
+    // Pushes one byte; calls on_frame(frame_bytes) if it completes a frame.
+    template <class OnFrame>
+    constexpr void push_byte(std::uint8_t b, OnFrame&& on_frame) {
         if (len_ == 0) {
             if (b == start1) buf_[len_++] = b;
             else ++skipped_;
-            return std::nullopt;
+            return;
         }
-        buf_[len_++] = b;
-        if (!prefix_ok(len_ - 1)) resync();
-        if (len_ == frame_size) {
-            len_ = 0;
-            ++frames_;
-            return buf_;
+        const std::size_t k = len_++;
+        buf_[k] = b;
+        if (k == frame_size - 1) {  // earlier positions were checked as they came
+            if (b == end2) {
+                len_ = 0;
+                ++frames_;
+                on_frame(frame_bytes(buf_.data(), frame_size));
+            } else {
+                resync();  // leaves a shorter candidate: never a whole frame
+            }
+        } else if ((k == 1 && b != start2) || (k == 8 && b != end1)) {
+            resync();
         }
-        return std::nullopt;
     }
 
     constexpr std::uint64_t frames() const noexcept { return frames_; }          // frames reported
@@ -80,6 +110,15 @@ public:
     constexpr void reset() noexcept { *this = scanner{}; }
 
 private:
+    // Index of the next start byte in p[from..n), or n.
+    static constexpr std::size_t find_start(const std::uint8_t* p, std::size_t from, std::size_t n) noexcept {
+        if (!std::is_constant_evaluated()) {
+            const void* hit = std::memchr(p + from, start1, n - from);
+            return hit ? static_cast<std::size_t>(static_cast<const std::uint8_t*>(hit) - p) : n;
+        }
+        while (from < n && p[from] != start1) ++from;
+        return from;
+    }
     // Is buf_[k] what a frame has at position k (start and end markers)?
     constexpr bool prefix_ok(std::size_t k) const noexcept {
         switch (k) {
