@@ -345,7 +345,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::ui
     constexpr const auto& f = field_v<M, I>;
     using F = field_t<M, I>;
     constexpr std::size_t off = Base + f.offset;
-    auto& member = m.*(f.member);
+    constexpr auto member_ptr = f.member;
+    auto& member = m.*member_ptr;
     if constexpr (F::is_optional) {
         if (in.size() <= off) return true;  // absent: stays nullopt
         if (in.size() < off + F::size) { err = {errc::bad_length, off}; return false; }
@@ -438,7 +439,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool encode_field(const M& m, std::span<std::ui
     constexpr const auto& f = field_v<M, I>;
     using F = field_t<M, I>;
     constexpr std::size_t off = Base + f.offset;
-    const auto& member = m.*(f.member);
+    constexpr auto member_ptr = f.member;
+    const auto& member = m.*member_ptr;
     if constexpr (F::is_optional) {
         if (!member) return true;
         return encode_value<M, I, off>(*member, out, err);
@@ -503,8 +505,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool encode_element(const E& v, std::span<std::
 // missing_field when an optional block is present but an earlier one is not.
 template <class M, std::size_t... I>
 constexpr result<std::size_t> encoded_size(const M& m, std::index_sequence<I...>) noexcept {
-    constexpr const auto& t = table_v<M>;
-    std::size_t size = t.min_size();
+    std::size_t size = table_v<M>.min_size();
     std::size_t first_absent = 0;
     bool absent_seen = false;
     bool missing = false;
@@ -512,8 +513,9 @@ constexpr result<std::size_t> encoded_size(const M& m, std::index_sequence<I...>
         constexpr std::size_t i = decltype(index)::value;
         constexpr const auto& f = field_v<M, i>;
         using F = field_t<M, i>;
+        constexpr auto member_ptr = f.member;
         if constexpr (F::is_optional) {
-            if (!(m.*(f.member))) {
+            if (!(m.*member_ptr)) {
                 if (!absent_seen) { absent_seen = true; first_absent = f.offset; }
             } else if (absent_seen) {
                 missing = true;
@@ -521,7 +523,7 @@ constexpr result<std::size_t> encoded_size(const M& m, std::index_sequence<I...>
                 size = f.end();
             }
         } else if constexpr (F::kind == wire_kind::tail) {
-            const std::size_t end = f.offset + (m.*(f.member)).size();
+            const std::size_t end = f.offset + (m.*member_ptr).size();
             if (end > size) size = end;
         }
     };
@@ -531,21 +533,39 @@ constexpr result<std::size_t> encoded_size(const M& m, std::index_sequence<I...>
     return size;
 }
 
+// The first fixed byte of M that `in` has and gets wrong, as an error (code ok if none).
+template <class M, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE constexpr error check_fixed(std::span<const std::uint8_t> in, std::index_sequence<K...>) noexcept {
+    error e{};
+    (void)((((table_v<M>.fixed[K].offset < in.size()) &&
+             in[table_v<M>.fixed[K].offset] != table_v<M>.fixed[K].value)
+                ? (e = {table_v<M>.fixed[K].code, table_v<M>.fixed[K].offset}, true)
+                : false) ||
+           ...);
+    return e;
+}
+template <class M, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE constexpr void write_fixed(std::span<std::uint8_t> out, std::index_sequence<K...>) noexcept {
+    ((out[table_v<M>.fixed[K].offset] = table_v<M>.fixed[K].value), ...);
+}
+template <class M>
+inline constexpr std::size_t fixed_count_v = table_v<M>.fixed.size();
+
 }  // namespace detail
 
 // Decodes a message of type M from `in`; every length, fixed byte, range and
 // enum is checked, and the error says what and at which byte offset.
 template <described M>
 [[nodiscard]] constexpr result<M> decode(std::span<const std::uint8_t> in) noexcept {
-    constexpr const auto& t = table_v<M>;
+    constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.accepted_max(), extent = table_v<M>.extent();
     result<M> r{std::in_place};  // built in place: every return below returns r
-    for (const auto& b : t.fixed)
-        if (b.offset < in.size() && in[b.offset] != b.value) return r = fail(b.code, b.offset), r;
-    if (in.size() < t.min_size()) return r = fail(errc::too_short, in.size()), r;
-    if (in.size() > t.accepted_max()) return r = fail(errc::too_long, t.accepted_max()), r;
+    if (const error e = detail::check_fixed<M>(in, std::make_index_sequence<detail::fixed_count_v<M>>{}); e.code != errc::ok)
+        return r = e, r;
+    if (in.size() < min) return r = fail(errc::too_short, in.size()), r;
+    if (in.size() > max) return r = fail(errc::too_long, max), r;
     M& m = *r;
     error err{};
-    const auto known = in.size() > t.extent() ? in.first(t.extent()) : in;
+    const auto known = in.size() > extent ? in.first(extent) : in;
     if (!detail::decode_record<M, 0>(m, known, err, std::make_index_sequence<detail::field_count_v<M>>{}))
         return r = err, r;
     if constexpr (detail::reports_trailing<M>) m.ignored_trailing_bytes = in.size() - known.size();
@@ -555,14 +575,13 @@ template <described M>
 // Encodes m; out-of-range values and invalid enums are errors (never truncated).
 template <described M>
 [[nodiscard]] constexpr result<bytes<max_size_v<M>>> encode(const M& m) noexcept {
-    constexpr const auto& t = table_v<M>;
     constexpr auto fields = std::make_index_sequence<detail::field_count_v<M>>{};
     result<bytes<max_size_v<M>>> r{std::in_place};
     const auto size = detail::encoded_size(m, fields);
     if (!size) return r = size.error(), r;
     auto& out = *r;
     out.resize(*size);
-    for (const auto& b : t.fixed) out[b.offset] = b.value;
+    detail::write_fixed<M>(out.span(), std::make_index_sequence<detail::fixed_count_v<M>>{});
     error err{};
     if (!detail::encode_record<M, 0>(m, out.span(), err, fields)) return r = err, r;
     return r;

@@ -1,0 +1,40 @@
+// BuWizz3: every command decoded (as a device or sniffer would) and encoded
+// (as a host would), every notification decoded.
+#include <robowire/buwizz3.hpp>
+
+#include "harness.hpp"
+
+namespace bw = robowire::buwizz3;
+
+ENTRY void buwizz3_decode_command(std::span<const std::uint8_t> b) {
+    const auto c = bw::decode_command(b);
+    sink = c ? static_cast<std::uint32_t>(c->index()) : static_cast<std::uint32_t>(c.code());
+}
+ENTRY void buwizz3_decode_notification(std::span<const std::uint8_t> b) {
+    const auto n = bw::decode_notification(b);
+    sink = n ? static_cast<std::uint32_t>(n->index()) : static_cast<std::uint32_t>(n.code());
+}
+ENTRY void buwizz3_encode_command(std::span<const std::uint8_t> b) {
+    // a command built from input bytes, then encoded
+    const auto c = bw::decode_command(b);
+    if (!c) return;
+    const auto w = robowire::encode(*c);
+    if (w) out(*w);
+}
+ENTRY void buwizz3_encode_drive(std::span<const std::uint8_t> b) {
+    bw::set_motor_data_extended m{};
+    for (std::size_t i = 0; i < 4; ++i) m.reference[i] = static_cast<std::int32_t>(b[i] * 1000);
+    m.power = {static_cast<std::int8_t>(b[4] & 0x7F), static_cast<std::int8_t>(b[5] & 0x7F)};
+    const auto w = robowire::encode(m);
+    if (w) out(*w);
+}
+
+int main() {
+    const auto in = read_input<160>();
+    const auto b = std::span(in).first(size_in(129));
+    buwizz3_decode_command(b);
+    buwizz3_decode_notification(b);
+    buwizz3_encode_command(b);
+    buwizz3_encode_drive(in);
+    return 0;
+}

@@ -1,0 +1,42 @@
+// NAVBOT-ES02: maneuver encode/decode (both sign encodings), frame dispatch,
+// fragmenter and reassembler.
+#include <robowire/navbot.hpp>
+
+#include "harness.hpp"
+
+namespace nb = robowire::navbot;
+
+ENTRY void navbot_encode_maneuver(std::span<const std::uint8_t> b) {
+    nb::maneuver m{};
+    m.pitch = static_cast<std::int8_t>(static_cast<std::int8_t>(b[0]) % 101);
+    m.yaw = static_cast<std::int8_t>(static_cast<std::int8_t>(b[1]) % 101);
+    m.switch_a = static_cast<nb::switch_a>(b[2] % 3);
+    const auto w = nb::encode(m, (b[3] & 1) ? nb::sign_encoding::sign_magnitude : nb::sign_encoding::twos_complement);
+    if (w) out(*w);
+}
+ENTRY void navbot_decode_frame(std::span<const std::uint8_t> b) {
+    const auto m = nb::decode_frame(b);
+    sink = m ? static_cast<std::uint32_t>(m->index()) : static_cast<std::uint32_t>(m.code());
+    const auto sm = nb::decode_maneuver(b, nb::sign_encoding::sign_magnitude);
+    if (sm) sink = static_cast<std::uint32_t>(sm->pitch);
+}
+nb::reassembler<120> reassembler_state;
+ENTRY void navbot_reassemble(std::span<const std::uint8_t> frame) {
+    const auto st = reassembler_state.push(frame);
+    if (st && *st == nb::reassembly::complete) out(reassembler_state.payload());
+}
+ENTRY void navbot_fragment(std::span<const std::uint8_t> payload) {
+    const auto frames = nb::make_frames(nb::command::json, payload);
+    if (!frames) return;
+    for (const auto& f : *frames) out(f);
+}
+
+int main() {
+    const auto in = read_input<160>();
+    const auto b = std::span(in).first(size_in(40));
+    navbot_encode_maneuver(in);
+    navbot_decode_frame(b);
+    navbot_reassemble(b);
+    navbot_fragment(std::span(in).first(size_in(120)));
+    return 0;
+}
