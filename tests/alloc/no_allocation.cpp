@@ -8,6 +8,10 @@
 #include <cstdlib>
 #include <new>
 
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"  // replacement operators on malloc/free, on purpose
+#endif
+
 namespace {
 std::size_t allocations = 0;
 }

@@ -1,5 +1,6 @@
 #include <robowire/core/result.hpp>
 
+#include <array>
 #include <catch2/catch.hpp>
 
 using namespace robowire;
@@ -24,5 +25,9 @@ TEST_CASE("result<T> holds a value or an error with an offset", "[core][result]"
     CHECK_FALSE(r);
     CHECK(r.error().offset == 3);
     CHECK(to_string(errc::too_short) == "input too short");
+    // a temporary's value is returned by value: safe to iterate
+    int sum = 0;
+    for (int x : result<std::array<int, 3>>(std::array<int, 3>{1, 2, 3}).value()) sum += x;
+    CHECK(sum == 6);
     CHECK(to_string(errc::bad_trailer) == "bad trailer byte");
 }

@@ -93,10 +93,11 @@ public:
 
     constexpr T& value() & noexcept { check(true); return value_; }
     constexpr const T& value() const& noexcept { check(true); return value_; }
-    constexpr T&& value() && noexcept { check(true); return std::move(value_); }
+    // From a temporary: the value itself, so `for (auto& x : make().value())` does not dangle.
+    constexpr T value() && noexcept(std::is_nothrow_move_constructible_v<T>) { check(true); return std::move(value_); }
     constexpr T& operator*() & noexcept { return value(); }
     constexpr const T& operator*() const& noexcept { return value(); }
-    constexpr T&& operator*() && noexcept { return std::move(*this).value(); }
+    constexpr T operator*() && noexcept(std::is_nothrow_move_constructible_v<T>) { return std::move(*this).value(); }
     constexpr T* operator->() noexcept { return &value(); }
     constexpr const T* operator->() const noexcept { return &value(); }
 
