@@ -84,6 +84,17 @@ void status_decode_robowire(benchmark::State& state) {
     }
 }
 template <std::size_t N>
+void status_decode_into(benchmark::State& state) {
+    const auto in = status_inputs();
+    std::size_t i = 0;
+    bw::status s{};
+    for (auto _ : state) {
+        auto e = robowire::decode_into(s, std::span(in[i++ % bench::variants]).first(N));
+        benchmark::DoNotOptimize(e);
+        benchmark::DoNotOptimize(s);
+    }
+}
+template <std::size_t N>
 void status_decode_handwritten(benchmark::State& state) {
     const auto in = status_inputs();
     std::size_t i = 0;
@@ -359,9 +370,13 @@ void commands_memcpy(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(status_decode_robowire<68>)->Name("buwizz3.status68_decode:robowire");
+BENCHMARK(status_decode_into<68>)->Name("buwizz3.status68_decode_into:robowire");
+BENCHMARK(status_decode_handwritten<68>)->Name("buwizz3.status68_decode_into:handwritten");
 BENCHMARK(status_decode_handwritten<68>)->Name("buwizz3.status68_decode:handwritten");
 BENCHMARK(status_decode_memcpy<68>)->Name("buwizz3.status68_decode:memcpy");
 BENCHMARK(status_decode_robowire<54>)->Name("buwizz3.status54_decode:robowire");
+BENCHMARK(status_decode_into<54>)->Name("buwizz3.status54_decode_into:robowire");
+BENCHMARK(status_decode_handwritten<54>)->Name("buwizz3.status54_decode_into:handwritten");
 BENCHMARK(status_decode_handwritten<54>)->Name("buwizz3.status54_decode:handwritten");
 BENCHMARK(status_decode_memcpy<54>)->Name("buwizz3.status54_decode:memcpy");
 BENCHMARK(encode30_robowire)->Name("buwizz3.encode_0x30:robowire");

@@ -92,6 +92,15 @@ TEST_CASE("table-driven encode", "[core][table]") {
     CHECK(encode_to(full_msg, small).error() == error{errc::buffer_too_small, 17});
 }
 
+TEST_CASE("decode_into refreshes an existing object", "[core][table]") {
+    msg m = full_msg;
+    REQUIRE(decode_into(m, base) == error{});
+    CHECK(m == base_msg);  // the optional blocks absent again
+    REQUIRE(decode_into(m, full) == error{});
+    CHECK(m == full_msg);
+    CHECK(decode_into(m, base.span().first(5)) == error{errc::too_short, 5});
+}
+
 TEST_CASE("table-driven decode errors name the byte", "[core][table]") {
     STATIC_REQUIRE(decode_error(with(base, 0, 0x31)) == error{errc::bad_command, 0});
     STATIC_REQUIRE(decode_error(base.span().first(11)) == error{errc::too_short, 11});

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <optional>
 #include <span>
@@ -333,9 +334,31 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_array(V& v, std::span<const std::ui
     return (decode_element<M, I, Off + K * field_t<M, I>::element_size>(v[K], in, err) && ...);
 }
 
+// An array of bytes that needs no validation: copied whole (one memcpy at run time).
+template <class M, std::size_t I>
+inline constexpr bool plain_byte_array_v = [] {
+    using F = field_t<M, I>;
+    using E = typename F::element_type;
+    if constexpr (!F::is_array || std::is_enum_v<E> || std::is_same_v<E, bool> || sizeof(E) != 1 ||
+                  !std::is_integral_v<E>) {
+        return false;
+    } else if constexpr (F::kind != wire_kind::u8 && F::kind != wire_kind::i8) {
+        return false;
+    } else {
+        return field_v<M, I>.valid.min == std::numeric_limits<E>::min() &&
+               field_v<M, I>.valid.max == std::numeric_limits<E>::max();
+    }
+}();
+
 template <class M, std::size_t I, std::size_t Off, class V>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_value(V& v, std::span<const std::uint8_t> in, error& err) noexcept {
     using F = field_t<M, I>;
+    if constexpr (plain_byte_array_v<M, I>) {
+        if (!std::is_constant_evaluated()) {
+            std::memcpy(v.data(), in.data() + Off, F::count);
+            return true;
+        }
+    }
     if constexpr (F::is_array) return decode_array<M, I, Off>(v, in, err, std::make_index_sequence<F::count>{});
     else return decode_element<M, I, Off>(v, in, err);
 }
@@ -430,6 +453,12 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool encode_array(const V& v, std::span<std::ui
 template <class M, std::size_t I, std::size_t Off, class V>
 ROBOWIRE_ALWAYS_INLINE constexpr bool encode_value(const V& v, std::span<std::uint8_t> out, error& err) noexcept {
     using F = field_t<M, I>;
+    if constexpr (plain_byte_array_v<M, I>) {
+        if (!std::is_constant_evaluated()) {
+            std::memcpy(out.data() + Off, v.data(), F::count);
+            return true;
+        }
+    }
     if constexpr (F::is_array) return encode_array<M, I, Off>(v, out, err, std::make_index_sequence<F::count>{});
     else return encode_element<M, I, Off>(v, out, err);
 }
@@ -533,6 +562,20 @@ constexpr result<std::size_t> encoded_size(const M& m, std::index_sequence<I...>
     return size;
 }
 
+// Optional blocks absent until decoded (decode_into may reuse an object).
+template <class M, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr void reset_optionals(M& m, std::index_sequence<I...>) noexcept {
+    auto one = [&](auto index) {
+        constexpr std::size_t i = decltype(index)::value;
+        if constexpr (field_t<M, i>::is_optional) {
+            constexpr auto member_ptr = field_v<M, i>.member;
+            (m.*member_ptr).reset();
+        }
+    };
+    (one(std::integral_constant<std::size_t, I>{}), ...);
+    (void)one, (void)m;
+}
+
 // The first fixed byte of M that `in` has and gets wrong, as an error (code ok if none).
 template <class M, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr error check_fixed(std::span<const std::uint8_t> in, std::index_sequence<K...>) noexcept {
@@ -553,22 +596,30 @@ inline constexpr std::size_t fixed_count_v = table_v<M>.fixed.size();
 
 }  // namespace detail
 
+// Decodes `in` into `out` (an existing object, e.g. one refreshed 20 times a
+// second): the same checks as decode(); returns errc::ok or the error. On an
+// error, `out`'s fields are unspecified.
+template <described M>
+[[nodiscard]] constexpr error decode_into(M& out, std::span<const std::uint8_t> in) noexcept {
+    constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.accepted_max(), extent = table_v<M>.extent();
+    if (const error e = detail::check_fixed<M>(in, std::make_index_sequence<detail::fixed_count_v<M>>{}); e.code != errc::ok)
+        return e;
+    if (in.size() < min) return fail(errc::too_short, in.size());
+    if (in.size() > max) return fail(errc::too_long, max);
+    error err{};
+    const auto known = in.size() > extent ? in.first(extent) : in;
+    detail::reset_optionals(out, std::make_index_sequence<detail::field_count_v<M>>{});
+    if (!detail::decode_record<M, 0>(out, known, err, std::make_index_sequence<detail::field_count_v<M>>{})) return err;
+    if constexpr (detail::reports_trailing<M>) out.ignored_trailing_bytes = in.size() - known.size();
+    return err;
+}
+
 // Decodes a message of type M from `in`; every length, fixed byte, range and
 // enum is checked, and the error says what and at which byte offset.
 template <described M>
 [[nodiscard]] constexpr result<M> decode(std::span<const std::uint8_t> in) noexcept {
-    constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.accepted_max(), extent = table_v<M>.extent();
     result<M> r{std::in_place};  // built in place: every return below returns r
-    if (const error e = detail::check_fixed<M>(in, std::make_index_sequence<detail::fixed_count_v<M>>{}); e.code != errc::ok)
-        return r = e, r;
-    if (in.size() < min) return r = fail(errc::too_short, in.size()), r;
-    if (in.size() > max) return r = fail(errc::too_long, max), r;
-    M& m = *r;
-    error err{};
-    const auto known = in.size() > extent ? in.first(extent) : in;
-    if (!detail::decode_record<M, 0>(m, known, err, std::make_index_sequence<detail::field_count_v<M>>{}))
-        return r = err, r;
-    if constexpr (detail::reports_trailing<M>) m.ignored_trailing_bytes = in.size() - known.size();
+    if (const error e = decode_into(*r, in); e.code != errc::ok) r = e;
     return r;
 }
 
@@ -578,12 +629,12 @@ template <described M>
     constexpr auto fields = std::make_index_sequence<detail::field_count_v<M>>{};
     result<bytes<max_size_v<M>>> r{std::in_place};
     const auto size = detail::encoded_size(m, fields);
-    if (!size) return r = size.error(), r;
+    if (!size) { r = size.error(); return r; }
     auto& out = *r;
     out.resize(*size);
     detail::write_fixed<M>(out.span(), std::make_index_sequence<detail::fixed_count_v<M>>{});
     error err{};
-    if (!detail::encode_record<M, 0>(m, out.span(), err, fields)) return r = err, r;
+    if (!detail::encode_record<M, 0>(m, out.span(), err, fields)) { r = err; return r; }
     return r;
 }
 
