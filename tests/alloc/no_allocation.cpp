@@ -13,17 +13,19 @@
 #endif
 
 namespace {
-std::size_t allocations = 0;
+// volatile: compilers treat malloc as touching no user globals and would keep a stale copy
+volatile std::size_t allocations = 0;
+void count() { allocations = allocations + 1; }
 }
 
 void* operator new(std::size_t n) {
-    ++allocations;
+    count();
     if (void* p = std::malloc(n ? n : 1)) return p;
     std::abort();
 }
 void* operator new[](std::size_t n) { return operator new(n); }
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept { ++allocations; return std::malloc(n ? n : 1); }
-void* operator new[](std::size_t n, const std::nothrow_t&) noexcept { ++allocations; return std::malloc(n ? n : 1); }
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept { count(); return std::malloc(n ? n : 1); }
+void* operator new[](std::size_t n, const std::nothrow_t&) noexcept { count(); return std::malloc(n ? n : 1); }
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
@@ -32,7 +34,7 @@ void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 // malloc itself: counted through the linker's --wrap=malloc (set in CMake).
 extern "C" void* __real_malloc(std::size_t);
 extern "C" void* __wrap_malloc(std::size_t n) {
-    ++allocations;
+    count();
     return __real_malloc(n);
 }
 
@@ -58,8 +60,11 @@ int main() {
     namespace nb = robowire::navbot;
     namespace osp = robowire::osp;
     // a control: the counter works
+    // (through a volatile pointer: optimizers may elide a new/delete pair that does not escape)
     const std::size_t before = allocations;
-    delete new int(1);
+    static int* volatile escape = nullptr;
+    escape = new int(1);
+    delete escape;
     if (allocations == before) {
         std::puts("allocation counter does not count");
         return 1;
