@@ -103,7 +103,7 @@ Variant pick(std::size_t index, reader& r) {
 }
 
 inline bool same_bytes(std::span<const std::uint8_t> a, std::span<const std::uint8_t> b) {
-    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size()) == 0);
+    return robowire::equal_bytes(a, b);
 }
 
 // Input bytes with the message's reserved bytes set to 0 (what re-encoding sends).

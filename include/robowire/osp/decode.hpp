@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "../core/dispatch.hpp"
 #include "messages.hpp"
 
 namespace robowire::osp {
@@ -62,9 +63,10 @@ constexpr result<message> decode_by_key(std::uint16_t key, std::span<const std::
     return {detail::decode_by_key(key, in), *f};
 }
 
-// Encodes any message of the variant.
+// Encodes any message of the variant (every OSP frame is frame_size bytes).
 [[nodiscard]] constexpr result<bytes<frame_size>> encode(const message& m) noexcept {
-    return std::visit([](const auto& x) -> result<bytes<frame_size>> { return robowire::encode(x); }, m);
+    static_assert(variant_max_size_v<message> == frame_size);
+    return robowire::encode(m);
 }
 
 // Device role. Decodes `request` and calls handler(msg) for the message it
