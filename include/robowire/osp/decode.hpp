@@ -8,7 +8,6 @@
 #include <type_traits>
 #include <variant>
 
-#include "../core/dispatch.hpp"
 #include "messages.hpp"
 
 namespace robowire::osp {
@@ -63,10 +62,10 @@ constexpr result<message> decode_by_key(std::uint16_t key, std::span<const std::
     return {detail::decode_by_key(key, in), *f};
 }
 
-// Encodes any message of the variant (every OSP frame is frame_size bytes).
+// Encodes any message of the variant. (Not the core encode(variant): that
+// copies into a second buffer, which costs Cortex-M code size and stack.)
 [[nodiscard]] constexpr result<bytes<frame_size>> encode(const message& m) noexcept {
-    static_assert(variant_max_size_v<message> == frame_size);
-    return robowire::encode(m);
+    return std::visit([](const auto& x) -> result<bytes<frame_size>> { return robowire::encode(x); }, m);
 }
 
 // Device role. Decodes `request` and calls handler(msg) for the message it
