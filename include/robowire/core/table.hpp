@@ -339,7 +339,7 @@ template <class M, std::size_t I>
 inline constexpr bool plain_byte_array_v = [] {
     using F = field_t<M, I>;
     using E = typename F::element_type;
-    if constexpr (!F::is_array || std::is_enum_v<E> || std::is_same_v<E, bool> || sizeof(E) != 1 ||
+    if constexpr (!F::is_array || F::count < 4 || std::is_enum_v<E> || std::is_same_v<E, bool> || sizeof(E) != 1 ||
                   !std::is_integral_v<E>) {
         return false;
     } else if constexpr (F::kind != wire_kind::u8 && F::kind != wire_kind::i8) {
@@ -371,9 +371,12 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::ui
     constexpr auto member_ptr = f.member;
     auto& member = m.*member_ptr;
     if constexpr (F::is_optional) {
-        if (in.size() <= off) return true;  // absent: stays nullopt
+        if (in.size() <= off) { member.reset(); return true; }  // absent
         if (in.size() < off + F::size) { err = {errc::bad_length, off}; return false; }
-        return decode_value<M, I, off>(member.emplace(), in, err);
+        value_t<typename F::member_type> tmp{};  // stored whole once decoded
+        if (!decode_value<M, I, off>(tmp, in, err)) return false;
+        member = tmp;
+        return true;
     } else {
         return decode_value<M, I, off>(member, in, err);
     }
@@ -392,7 +395,12 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
     using F = field_t<M, I>;
     using W = typename F::wire_type;
     if constexpr (W::kind == wire_kind::record) {
-        return decode_record<E, Off>(v, in, err, std::make_index_sequence<field_count_v<E>>{});
+        // Decoded into a local, then stored whole: the loads are not ordered
+        // behind byte stores that might alias the input, so they merge.
+        E tmp{};
+        if (!decode_record<E, Off>(tmp, in, err, std::make_index_sequence<field_count_v<E>>{})) return false;
+        v = tmp;
+        return true;
     } else if constexpr (W::kind == wire_kind::text) {
         constexpr std::size_t n = text_traits<E>::size;
         std::size_t len = 0;
@@ -562,20 +570,6 @@ constexpr result<std::size_t> encoded_size(const M& m, std::index_sequence<I...>
     return size;
 }
 
-// Optional blocks absent until decoded (decode_into may reuse an object).
-template <class M, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr void reset_optionals(M& m, std::index_sequence<I...>) noexcept {
-    auto one = [&](auto index) {
-        constexpr std::size_t i = decltype(index)::value;
-        if constexpr (field_t<M, i>::is_optional) {
-            constexpr auto member_ptr = field_v<M, i>.member;
-            (m.*member_ptr).reset();
-        }
-    };
-    (one(std::integral_constant<std::size_t, I>{}), ...);
-    (void)one, (void)m;
-}
-
 // The first fixed byte of M that `in` has and gets wrong, as an error (code ok if none).
 template <class M, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr error check_fixed(std::span<const std::uint8_t> in, std::index_sequence<K...>) noexcept {
@@ -608,7 +602,6 @@ template <described M>
     if (in.size() > max) return fail(errc::too_long, max);
     error err{};
     const auto known = in.size() > extent ? in.first(extent) : in;
-    detail::reset_optionals(out, std::make_index_sequence<detail::field_count_v<M>>{});
     if (!detail::decode_record<M, 0>(out, known, err, std::make_index_sequence<detail::field_count_v<M>>{})) return err;
     if constexpr (detail::reports_trailing<M>) out.ignored_trailing_bytes = in.size() - known.size();
     return err;
