@@ -195,6 +195,17 @@ void encode_robowire(benchmark::State& state, Make make) {
         benchmark::DoNotOptimize(r);
     }
 }
+template <class M, class Make>
+void encode_to_robowire(benchmark::State& state, Make make) {
+    const auto in = make();
+    std::size_t i = 0;
+    std::array<std::uint8_t, 64> out{};
+    for (auto _ : state) {
+        auto n = robowire::encode_to(in[i++ % bench::variants], out);
+        benchmark::DoNotOptimize(n);
+        benchmark::DoNotOptimize(out);
+    }
+}
 template <class M, class Make, class Enc>
 void encode_handwritten(benchmark::State& state, Make make, Enc enc) {
     const auto in = make();
@@ -208,6 +219,9 @@ void encode_handwritten(benchmark::State& state, Make make, Enc enc) {
 }
 
 void encode30_robowire(benchmark::State& s) { encode_robowire<bw::set_motor_data>(s, motor_inputs); }
+void encode30_to(benchmark::State& s) { encode_to_robowire<bw::set_motor_data>(s, motor_inputs); }
+void encode31_to(benchmark::State& s) { encode_to_robowire<bw::set_motor_data_extended>(s, motor_ext_inputs); }
+void encode53_to(benchmark::State& s) { encode_to_robowire<bw::set_pid_parameters>(s, pid_inputs); }
 void encode30_handwritten(benchmark::State& s) { encode_handwritten<bw::set_motor_data>(s, motor_inputs, hw_encode_motor); }
 void encode31_robowire(benchmark::State& s) { encode_robowire<bw::set_motor_data_extended>(s, motor_ext_inputs); }
 void encode31_handwritten(benchmark::State& s) {
@@ -381,10 +395,16 @@ BENCHMARK(status_decode_handwritten<54>)->Name("buwizz3.status54_decode:handwrit
 BENCHMARK(status_decode_memcpy<54>)->Name("buwizz3.status54_decode:memcpy");
 BENCHMARK(encode30_robowire)->Name("buwizz3.encode_0x30:robowire");
 BENCHMARK(encode30_handwritten)->Name("buwizz3.encode_0x30:handwritten");
+BENCHMARK(encode30_to)->Name("buwizz3.encode_to_0x30:robowire");
+BENCHMARK(encode30_handwritten)->Name("buwizz3.encode_to_0x30:handwritten");
 BENCHMARK(encode31_robowire)->Name("buwizz3.encode_0x31:robowire");
 BENCHMARK(encode31_handwritten)->Name("buwizz3.encode_0x31:handwritten");
+BENCHMARK(encode31_to)->Name("buwizz3.encode_to_0x31:robowire");
+BENCHMARK(encode31_handwritten)->Name("buwizz3.encode_to_0x31:handwritten");
 BENCHMARK(encode53_robowire)->Name("buwizz3.encode_0x53:robowire");
 BENCHMARK(encode53_handwritten)->Name("buwizz3.encode_0x53:handwritten");
+BENCHMARK(encode53_to)->Name("buwizz3.encode_to_0x53:robowire");
+BENCHMARK(encode53_handwritten)->Name("buwizz3.encode_to_0x53:handwritten");
 BENCHMARK(commands_robowire)->Name("buwizz3.decode_command_mixed:robowire");
 BENCHMARK(commands_handwritten)->Name("buwizz3.decode_command_mixed:handwritten");
 BENCHMARK(commands_memcpy)->Name("buwizz3.decode_command_mixed:memcpy");

@@ -43,6 +43,18 @@ constexpr auto table_of(std::type_identity<msg>) {
                            field{"on", &msg::on, 11, wire::u8{}}, field{"gain", &msg::gain, 12, wire::f32le{}},
                            field{"extra", &msg::extra, 16, wire::u8{}, range{0, 9}});
 }
+// 0:0x40 | 1-4 name text<4> | 5 reserved | 6 x | 7 reserved (wire_size 8)
+struct named {
+    robowire::text<4> name{};
+    std::uint8_t x{};
+};
+constexpr auto table_of(std::type_identity<named>) {
+    using namespace robowire;
+    auto t = make_table<named>("named", {{0, 0x40, errc::bad_command}}, field{"name", &named::name, 1, wire::text{}},
+                               field{"x", &named::x, 6, wire::u8{}, range{0, 9}});
+    t.wire_size = 8;
+    return t;
+}
 }  // namespace demo
 
 using namespace robowire;
@@ -132,4 +144,44 @@ TEST_CASE("round trip keeps NaN payloads", "[core][table]") {
     const auto back = decode<msg>(wire).value();
     CHECK(std::bit_cast<std::uint32_t>(*back.gain) == 0x7FC01234u);
     CHECK(encode(back).value() == wire);
+}
+
+namespace {
+// encode_to over a buffer full of 0xEE; returns the buffer (or the error's offset in byte 0, 0xEE elsewhere).
+template <class M>
+constexpr bytes<20> encode_over_dirty(const M& m, std::size_t room) {
+    bytes<20> buf = bytes<20>::zeros(20);
+    for (auto& b : buf) b = 0xEE;
+    const auto n = encode_to(m, buf.span().first(room));
+    if (!n) buf[0] = static_cast<std::uint8_t>(n.error().offset);
+    return buf;
+}
+}  // namespace
+
+TEST_CASE("encode_to writes every byte of the message into a used buffer", "[core][table]") {
+    // Bit fields (byte 10) are cleared before they are or-ed in; bytes after the message stay.
+    STATIC_REQUIRE(encode_over_dirty(full_msg, 20) ==
+                   test::hex("30 05 FB 14 01 34 12 02 FF FF A5 01 9A 99 19 3F 09 EE EE EE"));
+    STATIC_REQUIRE(encode_over_dirty(base_msg, 20) ==
+                   test::hex("30 05 FB 14 01 34 12 02 FF FF A5 01 EE EE EE EE EE EE EE EE"));
+    // Text padding and reserved bytes (5, 7) are written as zero.
+    STATIC_REQUIRE(encode_over_dirty(demo::named{"AB", 7}, 20) ==
+                   test::hex("40 41 42 00 00 00 07 00 EE EE EE EE EE EE EE EE EE EE EE EE"));
+    CHECK(encode_over_dirty(demo::named{"AB", 7}, 20) ==
+          test::hex("40 41 42 00 00 00 07 00 EE EE EE EE EE EE EE EE EE EE EE EE"));
+    CHECK(encode_over_dirty(full_msg, 20) == test::hex("30 05 FB 14 01 34 12 02 FF FF A5 01 9A 99 19 3F 09 EE EE EE"));
+}
+
+TEST_CASE("encode_to leaves the buffer alone on an error", "[core][table]") {
+    // Range error at byte 6 (x = 10 > 9): nothing written; the error's offset lands in byte 0 only.
+    STATIC_REQUIRE(encode_over_dirty(demo::named{"AB", 10}, 20) ==
+                   test::hex("06 EE EE EE EE EE EE EE EE EE EE EE EE EE EE EE EE EE EE EE"));
+    // Too small a buffer: buffer_too_small with the size needed (8), nothing written.
+    STATIC_REQUIRE(encode_over_dirty(demo::named{"AB", 7}, 7) ==
+                   test::hex("08 EE EE EE EE EE EE EE EE EE EE EE EE EE EE EE EE EE EE EE"));
+    std::array<std::uint8_t, 8> out{};
+    out.fill(0xEE);
+    CHECK(encode_to(demo::named{"AB", 10}, out).error() == error{errc::value_out_of_range, 6});
+    CHECK(encode_to(demo::named{"AB", 7}, std::span(out).first(7)).error() == error{errc::buffer_too_small, 8});
+    for (auto b : out) CHECK(b == 0xEE);
 }
