@@ -77,43 +77,51 @@ bool hw_decode_status(const std::uint8_t* p, std::size_t n, hw_status& s) {
 template <std::size_t N>
 void status_decode_robowire(benchmark::State& state) {
     const auto in = status_inputs();
-    std::size_t i = 0;
     for (auto _ : state) {
-        auto r = robowire::decode<bw::status>(std::span(in[i++ % bench::variants]).first(N));
-        benchmark::DoNotOptimize(r);
+        for (const auto& item : in) {
+            auto r = robowire::decode<bw::status>(std::span(item).first(N));
+            benchmark::DoNotOptimize(r);
+        }
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(in.size()));
 }
 template <std::size_t N>
 void status_decode_into(benchmark::State& state) {
     const auto in = status_inputs();
-    std::size_t i = 0;
     bw::status s{};
     for (auto _ : state) {
-        auto e = robowire::decode_into(s, std::span(in[i++ % bench::variants]).first(N));
-        benchmark::DoNotOptimize(e);
-        benchmark::DoNotOptimize(s);
+        for (const auto& item : in) {
+            auto e = robowire::decode_into(s, std::span(item).first(N));
+            benchmark::DoNotOptimize(e);
+            benchmark::DoNotOptimize(s);
+        }
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(in.size()));
 }
 template <std::size_t N>
 void status_decode_handwritten(benchmark::State& state) {
     const auto in = status_inputs();
-    std::size_t i = 0;
     hw_status s{};
     for (auto _ : state) {
-        bool ok = hw_decode_status(in[i++ % bench::variants].data(), N, s);
-        benchmark::DoNotOptimize(ok);
-        benchmark::DoNotOptimize(s);
+        for (const auto& item : in) {
+            bool ok = hw_decode_status(item.data(), N, s);
+            benchmark::DoNotOptimize(ok);
+            benchmark::DoNotOptimize(s);
+        }
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(in.size()));
 }
 template <std::size_t N>
 void status_decode_memcpy(benchmark::State& state) {
     const auto in = status_inputs();
-    std::size_t i = 0;
     std::array<std::uint8_t, 68> out{};
     for (auto _ : state) {
-        std::memcpy(out.data(), in[i++ % bench::variants].data(), N);
-        benchmark::DoNotOptimize(out);
+        for (const auto& item : in) {
+            std::memcpy(out.data(), item.data(), N);
+            benchmark::DoNotOptimize(out);
+        }
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(in.size()));
 }
 
 // ---- encoders: 0x30, 0x31, 0x53
@@ -189,33 +197,39 @@ bool hw_encode_pid(const bw::set_pid_parameters& m, std::uint8_t* out) {
 template <class M, class Make>
 void encode_robowire(benchmark::State& state, Make make) {
     const auto in = make();
-    std::size_t i = 0;
     for (auto _ : state) {
-        auto r = robowire::encode(in[i++ % bench::variants]);
-        benchmark::DoNotOptimize(r);
+        for (const auto& item : in) {
+            auto r = robowire::encode(item);
+            benchmark::DoNotOptimize(r);
+        }
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(in.size()));
 }
 template <class M, class Make>
 void encode_to_robowire(benchmark::State& state, Make make) {
     const auto in = make();
-    std::size_t i = 0;
-    std::array<std::uint8_t, 64> out{};
+    alignas(64) std::array<std::uint8_t, 64> out{};
     for (auto _ : state) {
-        auto n = robowire::encode_to(in[i++ % bench::variants], out);
-        benchmark::DoNotOptimize(n);
-        benchmark::DoNotOptimize(out);
+        for (const auto& item : in) {
+            auto n = robowire::encode_to(item, out);
+            benchmark::DoNotOptimize(n);
+            benchmark::DoNotOptimize(out);
+        }
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(in.size()));
 }
 template <class M, class Make, class Enc>
 void encode_handwritten(benchmark::State& state, Make make, Enc enc) {
     const auto in = make();
-    std::size_t i = 0;
-    std::array<std::uint8_t, 64> out{};
+    alignas(64) std::array<std::uint8_t, 64> out{};
     for (auto _ : state) {
-        bool ok = enc(in[i++ % bench::variants], out.data());
-        benchmark::DoNotOptimize(ok);
-        benchmark::DoNotOptimize(out);
+        for (const auto& item : in) {
+            bool ok = enc(item, out.data());
+            benchmark::DoNotOptimize(ok);
+            benchmark::DoNotOptimize(out);
+        }
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(in.size()));
 }
 
 void encode30_robowire(benchmark::State& s) { encode_robowire<bw::set_motor_data>(s, motor_inputs); }
@@ -353,33 +367,36 @@ bool hw_decode_command(const std::uint8_t* p, std::size_t n, hw_command& c) {
 
 void commands_robowire(benchmark::State& state) {
     const auto& batch = command_batch();
-    std::size_t i = 0;
     for (auto _ : state) {
-        const auto& b = batch[i++ % batch.size()];
-        auto r = bw::decode_command(b);
-        benchmark::DoNotOptimize(r);
+        for (const auto& item : batch) {
+            auto r = bw::decode_command(item);
+            benchmark::DoNotOptimize(r);
+        }
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(batch.size()));
 }
 void commands_handwritten(benchmark::State& state) {
     const auto& batch = command_batch();
-    std::size_t i = 0;
     hw_command c{};
     for (auto _ : state) {
-        const auto& b = batch[i++ % batch.size()];
-        bool ok = hw_decode_command(b.data(), b.size(), c);
-        benchmark::DoNotOptimize(ok);
-        benchmark::DoNotOptimize(c);
+        for (const auto& item : batch) {
+            bool ok = hw_decode_command(item.data(), item.size(), c);
+            benchmark::DoNotOptimize(ok);
+            benchmark::DoNotOptimize(c);
+        }
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(batch.size()));
 }
 void commands_memcpy(benchmark::State& state) {
     const auto& batch = command_batch();
-    std::size_t i = 0;
-    std::array<std::uint8_t, 64> out{};
+    alignas(64) std::array<std::uint8_t, 64> out{};
     for (auto _ : state) {
-        const auto& b = batch[i++ % batch.size()];
-        std::memcpy(out.data(), b.data(), b.size());
-        benchmark::DoNotOptimize(out);
+        for (const auto& item : batch) {
+            std::memcpy(out.data(), item.data(), item.size());
+            benchmark::DoNotOptimize(out);
+        }
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(batch.size()));
 }
 }  // namespace
 

@@ -71,39 +71,47 @@ bool hw_decode(const std::uint8_t* p, std::size_t n, nb::maneuver& m) {
 
 void encode_robowire(benchmark::State& state) {
     const auto v = maneuvers();
-    std::size_t i = 0;
     for (auto _ : state) {
-        auto r = robowire::encode(v[i++ % bench::variants]);
-        benchmark::DoNotOptimize(r);
+        for (const auto& item : v) {
+            auto r = robowire::encode(item);
+            benchmark::DoNotOptimize(r);
+        }
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(v.size()));
 }
 void encode_handwritten(benchmark::State& state) {
     const auto v = maneuvers();
-    std::size_t i = 0;
     std::array<std::uint8_t, 20> out{};
     for (auto _ : state) {
-        bool ok = hw_encode(v[i++ % bench::variants], out.data());
-        benchmark::DoNotOptimize(ok);
-        benchmark::DoNotOptimize(out);
+        for (const auto& item : v) {
+            bool ok = hw_encode(item, out.data());
+            benchmark::DoNotOptimize(ok);
+            benchmark::DoNotOptimize(out);
+        }
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(v.size()));
 }
 void decode_robowire(benchmark::State& state) {
     const auto v = maneuver_frames();
-    std::size_t i = 0;
     for (auto _ : state) {
-        auto r = robowire::decode<nb::maneuver>(v[i++ % bench::variants]);
-        benchmark::DoNotOptimize(r);
+        for (const auto& item : v) {
+            auto r = robowire::decode<nb::maneuver>(item);
+            benchmark::DoNotOptimize(r);
+        }
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(v.size()));
 }
 void decode_handwritten(benchmark::State& state) {
     const auto v = maneuver_frames();
-    std::size_t i = 0;
     nb::maneuver m{};
     for (auto _ : state) {
-        bool ok = hw_decode(v[i++ % bench::variants].data(), 20, m);
-        benchmark::DoNotOptimize(ok);
-        benchmark::DoNotOptimize(m);
+        for (const auto& item : v) {
+            bool ok = hw_decode(item.data(), 20, m);
+            benchmark::DoNotOptimize(ok);
+            benchmark::DoNotOptimize(m);
+        }
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(v.size()));
 }
 
 // 200-byte JSON payloads (14 frames), a few different ones.

@@ -52,39 +52,47 @@ bool hw_decode_any(const std::uint8_t* p, std::size_t n, hw_msg& m) {
 
 void voltage_robowire(benchmark::State& state) {
     const auto v = voltage_frames();
-    std::size_t i = 0;
     for (auto _ : state) {
-        auto r = robowire::decode<osp::obp1::voltage>(v[i++ % bench::variants]);
-        benchmark::DoNotOptimize(r);
+        for (const auto& item : v) {
+            auto r = robowire::decode<osp::obp1::voltage>(item);
+            benchmark::DoNotOptimize(r);
+        }
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(v.size()));
 }
 void voltage_handwritten(benchmark::State& state) {
     const auto v = voltage_frames();
-    std::size_t i = 0;
     std::int16_t cv = 0;
     for (auto _ : state) {
-        bool ok = hw_voltage(v[i++ % bench::variants].data(), 10, cv);
-        benchmark::DoNotOptimize(ok);
-        benchmark::DoNotOptimize(cv);
+        for (const auto& item : v) {
+            bool ok = hw_voltage(item.data(), 10, cv);
+            benchmark::DoNotOptimize(ok);
+            benchmark::DoNotOptimize(cv);
+        }
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(v.size()));
 }
 void dispatch_robowire(benchmark::State& state) {
     const auto v = frames();
-    std::size_t i = 0;
     for (auto _ : state) {
-        auto r = osp::decode(v[i++ % bench::variants]);
-        benchmark::DoNotOptimize(r);
+        for (const auto& item : v) {
+            auto r = osp::decode(item);
+            benchmark::DoNotOptimize(r);
+        }
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(v.size()));
 }
 void dispatch_handwritten(benchmark::State& state) {
     const auto v = frames();
-    std::size_t i = 0;
     hw_msg m{};
     for (auto _ : state) {
-        bool ok = hw_decode_any(v[i++ % bench::variants].data(), 10, m);
-        benchmark::DoNotOptimize(ok);
-        benchmark::DoNotOptimize(m);
+        for (const auto& item : v) {
+            bool ok = hw_decode_any(item.data(), 10, m);
+            benchmark::DoNotOptimize(ok);
+            benchmark::DoNotOptimize(m);
+        }
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(v.size()));
 }
 
 // ---- streams (64 KiB)

@@ -3,7 +3,8 @@
 
 Benchmarks are named "<case>:<variant>[/arg]". For each case, robowire's time
 is divided by each baseline's time measured in the same run (median when
-repetitions were run): ratio < 1 means robowire is faster."""
+repetitions were run): ratio < 1 means robowire is faster. Benchmarks that
+process a batch of messages per iteration report the time per message."""
 import json, sys
 from collections import defaultdict
 
@@ -18,7 +19,10 @@ for b in data["benchmarks"]:
     case, rest = name.split(":", 1)
     variant, _, arg = rest.partition("/")
     key = case + (f"/{arg}" if arg else "")
-    rows[key][variant] = b["real_time"], b["time_unit"], b.get("bytes_per_second")
+    t, unit = b["real_time"], b["time_unit"]
+    if b.get("items_per_second"):  # a batch per iteration: time per message
+        t, unit = 1e9 / b["items_per_second"], "ns"
+    rows[key][variant] = t, unit, b.get("bytes_per_second")
 
 print(f"{'case':44} {'robowire':>12} {'baseline':>24} {'ratio':>7}")
 for key in sorted(rows):

@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>  // std::construct_at
 #include <string_view>
 #include <type_traits>
 #include <utility>  // std::in_place_t, std::move
@@ -69,21 +70,23 @@ namespace detail {
 [[noreturn]] inline void bad_result_access() noexcept { __builtin_trap(); }
 }  // namespace detail
 
-// Either a T or an error. T must be default-constructible.
+// Either a T or an error; they share storage. T must be trivially copyable
+// and trivially destructible (every value type of this library is).
 template <class T>
 class [[nodiscard]] result {
+    static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>,
+                  "result<T>: T must be trivially copyable and trivially destructible");
+
 public:
     using value_type = T;
 
-    constexpr result(const T& val) noexcept(std::is_nothrow_copy_constructible_v<T>) : value_(val), ok_(true) {}
-    constexpr result(T&& val) noexcept(std::is_nothrow_move_constructible_v<T>) : value_(std::move(val)), ok_(true) {}
+    constexpr result(const T& val) noexcept : value_(val), ok_(true) {}
     constexpr result(robowire::error e) noexcept : error_(e), ok_(false) {}
-    // A value-holding result whose value is default-initialised (no block
-    // clear): for codecs that then write every member.
-    constexpr explicit result(std::in_place_t) noexcept(std::is_nothrow_default_constructible_v<T>) : ok_(true) {}
+    // A value-holding result with a default value: for codecs that then write every member.
+    constexpr explicit result(std::in_place_t) noexcept(std::is_nothrow_default_constructible_v<T>) : value_(), ok_(true) {}
     // Turns this result into an error.
     constexpr result& operator=(robowire::error e) noexcept {
-        error_ = e;
+        std::construct_at(&error_, e);  // ends the value's lifetime
         ok_ = false;
         return *this;
     }
@@ -94,10 +97,10 @@ public:
     constexpr T& value() & noexcept { check(true); return value_; }
     constexpr const T& value() const& noexcept { check(true); return value_; }
     // From a temporary: the value itself, so `for (auto& x : make().value())` does not dangle.
-    constexpr T value() && noexcept(std::is_nothrow_move_constructible_v<T>) { check(true); return std::move(value_); }
+    constexpr T value() && noexcept { check(true); return value_; }
     constexpr T& operator*() & noexcept { return value(); }
     constexpr const T& operator*() const& noexcept { return value(); }
-    constexpr T operator*() && noexcept(std::is_nothrow_move_constructible_v<T>) { return std::move(*this).value(); }
+    constexpr T operator*() && noexcept { return std::move(*this).value(); }
     constexpr T* operator->() noexcept { return &value(); }
     constexpr const T* operator->() const noexcept { return &value(); }
 
@@ -112,9 +115,11 @@ private:
     constexpr void check(bool want_value) const noexcept {
         if (ok_ != want_value) detail::bad_result_access();
     }
-    T value_;  // default member initialisers apply; no value-initialising block clear
-    robowire::error error_{};
-    bool ok_ = false;
+    union {
+        T value_;
+        robowire::error error_;
+    };
+    bool ok_;
 };
 
 // Shorthand for returning an error.
