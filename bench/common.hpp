@@ -19,4 +19,13 @@ struct rng {
     std::uint8_t byte() { return static_cast<std::uint8_t>(next()); }
 };
 
+// Keeps an output object in memory for the whole benchmark (its address
+// escapes), as a caller's struct would be; otherwise the compiler may split a
+// small struct into registers and spill it in pieces at every DoNotOptimize.
+template <class T>
+void in_memory(T& object) {
+    T* p = &object;
+    benchmark::DoNotOptimize(p);
+}
+
 }  // namespace bench

@@ -28,12 +28,12 @@ using any = std::variant<ping, pong>;
 using namespace robowire;
 
 TEST_CASE("decode_variant picks the alternative by its key byte", "[core][dispatch]") {
-    STATIC_REQUIRE(std::get<demo2::ping>(decode_variant<demo2::any>(test::hex("A5 01 07"), 1).value()).seq == 7);
-    STATIC_REQUIRE(std::get<demo2::pong>(decode_variant<demo2::any>(test::hex("A5 02 34 12"), 1).value()).seq == 0x1234);
-    STATIC_REQUIRE(decode_variant<demo2::any>(test::hex("A5 03 00"), 1).error() == error{errc::unknown_message, 1});
-    STATIC_REQUIRE(decode_variant<demo2::any>(test::hex("A5"), 1).error() == error{errc::too_short, 1});
-    STATIC_REQUIRE(decode_variant<demo2::any>(test::hex("A4 01 07"), 1).error() == error{errc::bad_header, 0});
-    STATIC_REQUIRE(decode_variant<demo2::any>(test::hex("A5 01 64"), 1).error() == error{errc::value_out_of_range, 2});
+    STATIC_REQUIRE(std::get<demo2::ping>(decode_variant<demo2::any, 1>(test::hex("A5 01 07")).value()).seq == 7);
+    STATIC_REQUIRE(std::get<demo2::pong>(decode_variant<demo2::any, 1>(test::hex("A5 02 34 12")).value()).seq == 0x1234);
+    STATIC_REQUIRE(decode_variant<demo2::any, 1>(test::hex("A5 03 00")).error() == error{errc::unknown_message, 1});
+    STATIC_REQUIRE(decode_variant<demo2::any, 1>(test::hex("A5")).error() == error{errc::too_short, 1});
+    STATIC_REQUIRE(decode_variant<demo2::any, 1>(test::hex("A4 01 07")).error() == error{errc::bad_header, 0});
+    STATIC_REQUIRE(decode_variant<demo2::any, 1>(test::hex("A5 01 64")).error() == error{errc::value_out_of_range, 2});
     STATIC_REQUIRE(variant_max_size_v<demo2::any> == 4);
     STATIC_REQUIRE(robowire::encode(demo2::any{demo2::pong{0x1234}}).value() == test::hex("A5 02 34 12"));
     STATIC_REQUIRE(robowire::encode(demo2::any{demo2::ping{100}}).error() == error{errc::value_out_of_range, 2});

@@ -22,11 +22,11 @@ using notification = std::variant<status, accel_calibration, charger_settings>;
 
 // Decodes a packet written to the device; unknown_message (offset 0) for an unknown command byte.
 [[nodiscard]] constexpr result<command> decode_command(std::span<const std::uint8_t> in) noexcept {
-    return decode_variant<command>(in, 0);
+    return decode_variant<command, 0>(in);
 }
 // Decodes a notification from the device; unknown_message (offset 0) for an unknown command byte.
 [[nodiscard]] constexpr result<notification> decode_notification(std::span<const std::uint8_t> in) noexcept {
-    return decode_variant<notification>(in, 0);
+    return decode_variant<notification, 0>(in);
 }
 
 }  // namespace robowire::buwizz3

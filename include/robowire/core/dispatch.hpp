@@ -2,7 +2,9 @@
 // choosing the alternative by the fixed byte at a key offset (the command).
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <variant>
 
@@ -11,36 +13,69 @@
 namespace robowire {
 
 namespace detail {
-template <class M>
-constexpr bool has_key(std::size_t key_offset, std::uint8_t key) noexcept {
-    for (const auto& b : table_v<M>.fixed)
-        if (b.offset == key_offset) return b.value == key;
-    return false;
+// Makes alternative I of v (default value) and returns it. Constant
+// evaluation assigns a new variant instead: clang 14 cannot evaluate
+// libstdc++'s emplace.
+template <std::size_t I, class Variant>
+ROBOWIRE_ALWAYS_INLINE constexpr auto& emplace_alternative(Variant& v) noexcept {
+    if (std::is_constant_evaluated()) v = Variant(std::in_place_index<I>);
+    else v.template emplace<I>();
+    return *std::get_if<I>(&v);
 }
-template <class Variant, std::size_t I = 0>
-constexpr result<Variant> decode_alternative(std::span<const std::uint8_t> in, std::size_t key_offset) noexcept {
-    if constexpr (I == std::variant_size_v<Variant>) {
-        return fail(errc::unknown_message, key_offset);
-    } else {
-        using M = std::variant_alternative_t<I, Variant>;
-        if (has_key<M>(key_offset, in[key_offset])) {
-            auto r = robowire::decode<M>(in);
-            if (!r) return r.error();
-            return Variant{std::in_place_index<I>, std::move(*r)};
-        }
-        return decode_alternative<Variant, I + 1>(in, key_offset);
-    }
+
+template <class M>
+constexpr int key_of(std::size_t key_offset) noexcept {  // -1: M has no fixed byte there
+    for (const auto& b : table_v<M>.fixed)
+        if (b.offset == key_offset) return b.value;
+    return -1;
+}
+// Alternative index for each value of the key byte (variant_size: none).
+template <class Variant, std::size_t KeyOffset>
+inline constexpr auto key_index_v = [] {
+    static_assert(std::variant_size_v<Variant> < 255, "decode_variant: too many alternatives");
+    std::array<std::uint8_t, 256> index{};
+    index.fill(static_cast<std::uint8_t>(std::variant_size_v<Variant>));
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        ((key_of<std::variant_alternative_t<I, Variant>>(KeyOffset) >= 0 &&
+                  index[static_cast<std::size_t>(key_of<std::variant_alternative_t<I, Variant>>(KeyOffset))] ==
+                      std::variant_size_v<Variant>
+              ? void(index[static_cast<std::size_t>(key_of<std::variant_alternative_t<I, Variant>>(KeyOffset))] =
+                         static_cast<std::uint8_t>(I))
+              : void()),
+         ...);
+    }(std::make_index_sequence<std::variant_size_v<Variant>>{});
+    return index;
+}();
+
+// Makes alternative I of r's variant and decodes `in` into it, in place.
+template <std::size_t I, class Variant>
+ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r, std::span<const std::uint8_t> in) noexcept {
+    auto& m = robowire::detail::emplace_alternative<I>(*r);
+    if (const error e = decode_into(m, in); e.code != errc::ok) r = e;
+}
+template <class Variant, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr void decode_index(result<Variant>& r, std::size_t index, std::span<const std::uint8_t> in,
+                                                   std::index_sequence<I...>) noexcept {
+    (void)((index == I ? (decode_alternative<I>(r, in), true) : false) || ...);
 }
 }  // namespace detail
 
-// Decodes `in` as the alternative of Variant whose fixed byte at key_offset
-// matches; unknown_message (at key_offset) if none does, too_short if the
-// input does not reach the key.
-template <class Variant>
-[[nodiscard]] constexpr result<Variant> decode_variant(std::span<const std::uint8_t> in,
-                                                       std::size_t key_offset = 0) noexcept {
-    if (in.size() <= key_offset) return fail(errc::too_short, in.size());
-    return detail::decode_alternative<Variant>(in, key_offset);
+// Decodes `in` as the alternative of Variant whose fixed byte at KeyOffset
+// matches (the first one, if several do); unknown_message (at KeyOffset) if
+// none does, too_short if the input does not reach the key. The message is
+// decoded in place, without copies.
+template <class Variant, std::size_t KeyOffset = 0>
+[[nodiscard]] constexpr result<Variant> decode_variant(std::span<const std::uint8_t> in) noexcept {
+    result<Variant> r{std::in_place};
+    if (in.size() <= KeyOffset) {
+        r = fail(errc::too_short, in.size());
+    } else if (const std::size_t index = detail::key_index_v<Variant, KeyOffset>[in[KeyOffset]];
+               index == std::variant_size_v<Variant>) {
+        r = fail(errc::unknown_message, KeyOffset);
+    } else {
+        detail::decode_index(r, index, in, std::make_index_sequence<std::variant_size_v<Variant>>{});
+    }
+    return r;
 }
 
 // Encodes whichever message the variant holds, into the largest buffer any needs.

@@ -681,6 +681,18 @@ template <described M>
     return err;
 }
 
+namespace detail {
+// Fields only, no fixed-byte or length checks: for dispatchers that have
+// checked both already (`in` holds at least M's extent).
+template <described M>
+ROBOWIRE_ALWAYS_INLINE constexpr error decode_fields(M& out, std::span<const std::uint8_t> in) noexcept {
+    error err{};
+    (void)decode_record<M, 0>(out, in.first(table_v<M>.extent()), err,
+                              std::make_index_sequence<field_count_v<M>>{});
+    return err;
+}
+}  // namespace detail
+
 // Decodes a message of type M from `in`; every length, fixed byte, range and
 // enum is checked, and the error says what and at which byte offset.
 template <described M>

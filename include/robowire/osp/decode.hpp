@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "../core/dispatch.hpp"
 #include "messages.hpp"
 
 namespace robowire::osp {
@@ -23,10 +24,13 @@ using message = std::variant<generic::request_device_type, generic::device_type,
 class decode_result : public result<message> {
 public:
     constexpr decode_result(result<message> r, std::optional<osp::frame> f) noexcept
-        : result<message>(std::move(r)), frame_(f) {}
+        : result<message>(r), frame_(f) {}
+    constexpr explicit decode_result(std::in_place_t) noexcept : result<message>(std::in_place) {}
+    using result<message>::operator=;
     constexpr const std::optional<osp::frame>& frame() const noexcept { return frame_; }
 
 private:
+    friend constexpr decode_result decode(std::span<const std::uint8_t> in) noexcept;
     std::optional<osp::frame> frame_;
 };
 
@@ -36,19 +40,18 @@ constexpr std::uint16_t key_of() noexcept {
     constexpr const auto& t = table_v<M>;
     return static_cast<std::uint16_t>(t.fixed[2].value << 8 | t.fixed[3].value);
 }
-template <std::size_t I = 0>
-constexpr result<message> decode_by_key(std::uint16_t key, std::span<const std::uint8_t> in) noexcept {
-    if constexpr (I == std::variant_size_v<message>) {
-        return fail(errc::unknown_message, 2);
-    } else {
-        using M = std::variant_alternative_t<I, message>;
-        if (key == key_of<M>()) {
-            auto r = robowire::decode<M>(in);
-            if (!r) return r.error();
-            return message{std::in_place_index<I>, *r};
-        }
-        return decode_by_key<I + 1>(key, in);
-    }
+// Fixed bytes checked by the frame already: makes the message and decodes its fields in place.
+template <std::size_t I>
+ROBOWIRE_ALWAYS_INLINE constexpr void decode_message(decode_result& d, std::span<const std::uint8_t> in) noexcept {
+    auto& m = robowire::detail::emplace_alternative<I>(*d);
+    if (const error e = robowire::detail::decode_fields(m, in); e.code != errc::ok) d = e;
+}
+template <std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::uint16_t key, std::span<const std::uint8_t> in,
+                                                    std::index_sequence<I...>) noexcept {
+    const bool known =
+        ((key == key_of<std::variant_alternative_t<I, message>>() ? (decode_message<I>(d, in), true) : false) || ...);
+    if (!known) d = fail(errc::unknown_message, 2);
 }
 }  // namespace detail
 
@@ -56,10 +59,16 @@ constexpr result<message> decode_by_key(std::uint16_t key, std::span<const std::
 // Errors: too_short / too_long, bad_header, bad_trailer, unknown_message
 // (offset 2), and the message's own field errors.
 [[nodiscard]] constexpr decode_result decode(std::span<const std::uint8_t> in) noexcept {
-    const auto f = robowire::decode<osp::frame>(in);
-    if (!f) return {f.error(), std::nullopt};
-    const auto key = static_cast<std::uint16_t>(f->device << 8 | f->command);
-    return {detail::decode_by_key(key, in), *f};
+    decode_result d{std::in_place};
+    osp::frame f{};
+    if (const error e = robowire::decode_into(f, in); e.code != errc::ok) {
+        d = e;
+        return d;
+    }
+    d.frame_ = f;
+    detail::decode_by_key(d, static_cast<std::uint16_t>(f.device << 8 | f.command), in,
+                          std::make_index_sequence<std::variant_size_v<message>>{});
+    return d;
 }
 
 // Encodes any message of the variant. (Not the core encode(variant): that
