@@ -28,4 +28,16 @@ void in_memory(T& object) {
     benchmark::DoNotOptimize(p);
 }
 
+// Reads a small result the way a caller does (the outcome, then the value),
+// before any DoNotOptimize: its memory clobber would otherwise force the
+// result, whose address the accessors take, to live on the stack, while the
+// baselines' bool and scalar outputs stay in registers.
+template <class Result>
+void consume(const Result& r) {
+    const bool ok = r.has_value();
+    const auto value = ok ? *r : typename Result::value_type{};
+    benchmark::DoNotOptimize(ok);
+    benchmark::DoNotOptimize(value);
+}
+
 }  // namespace bench

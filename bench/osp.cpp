@@ -54,8 +54,8 @@ void voltage_robowire(benchmark::State& state) {
     const auto v = voltage_frames();
     for (auto _ : state) {
         for (const auto& item : v) {
-            auto r = robowire::decode<osp::obp1::voltage>(item);
-            benchmark::DoNotOptimize(r);
+            const auto r = robowire::decode<osp::obp1::voltage>(item);
+            bench::consume(r);
         }
     }
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(v.size()));

@@ -68,6 +68,9 @@ namespace detail {
 // Called when a result is accessed in the wrong state. Not constexpr: such an
 // access inside a constant expression is a compile error; at run time it traps.
 [[noreturn]] inline void bad_result_access() noexcept { __builtin_trap(); }
+// Does nothing; not constexpr, so that compilers do not fold an in-place
+// result into a constant that they then write out as a block clear.
+inline void run_time_only() noexcept {}
 }  // namespace detail
 
 // Either a T or an error; they share storage. T must be trivially copyable
@@ -82,11 +85,15 @@ public:
 
     constexpr result(const T& val) noexcept : value_(val), ok_(true) {}
     constexpr result(robowire::error e) noexcept : error_(e), ok_(false) {}
-    // A value-holding result with a default value: for codecs that then write every member.
-    constexpr explicit result(std::in_place_t) noexcept(std::is_nothrow_default_constructible_v<T>) : value_(), ok_(true) {}
+    // A value-holding result whose value is default-initialised (member
+    // initialisers run; nothing is cleared first): for codecs that then
+    // write every member.
+    constexpr explicit result(std::in_place_t) noexcept(std::is_nothrow_default_constructible_v<T>)
+        : value_(std::in_place), ok_(true) {}
     // Turns this result into an error.
     constexpr result& operator=(robowire::error e) noexcept {
-        std::construct_at(&error_, e);  // ends the value's lifetime
+        if (ok_) std::destroy_at(&value_);  // the value's bytes are dead from here
+        std::construct_at(&error_, e);
         ok_ = false;
         return *this;
     }
@@ -94,10 +101,10 @@ public:
     constexpr bool has_value() const noexcept { return ok_; }
     constexpr explicit operator bool() const noexcept { return ok_; }
 
-    constexpr T& value() & noexcept { check(true); return value_; }
-    constexpr const T& value() const& noexcept { check(true); return value_; }
+    constexpr T& value() & noexcept { check(true); return value_.v; }
+    constexpr const T& value() const& noexcept { check(true); return value_.v; }
     // From a temporary: the value itself, so `for (auto& x : make().value())` does not dangle.
-    constexpr T value() && noexcept { check(true); return value_; }
+    constexpr T value() && noexcept { check(true); return value_.v; }
     constexpr T& operator*() & noexcept { return value(); }
     constexpr const T& operator*() const& noexcept { return value(); }
     constexpr T operator*() && noexcept { return std::move(*this).value(); }
@@ -109,14 +116,21 @@ public:
     constexpr errc code() const noexcept { return ok_ ? errc::ok : error_.code; }
 
     template <class U>
-    constexpr T value_or(U&& fallback) const& { return ok_ ? value_ : static_cast<T>(std::forward<U>(fallback)); }
+    constexpr T value_or(U&& fallback) const& { return ok_ ? value_.v : static_cast<T>(std::forward<U>(fallback)); }
 
 private:
     constexpr void check(bool want_value) const noexcept {
         if (ok_ != want_value) detail::bad_result_access();
     }
+    struct holder {  // default-initialises its value (value-initialising would clear it first)
+        T v;
+        constexpr explicit holder(std::in_place_t) noexcept(std::is_nothrow_default_constructible_v<T>) {
+            if (!std::is_constant_evaluated()) detail::run_time_only();
+        }
+        constexpr holder(const T& val) noexcept : v(val) {}
+    };
     union {
-        T value_;
+        holder value_;
         robowire::error error_;
     };
     bool ok_;

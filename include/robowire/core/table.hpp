@@ -716,8 +716,12 @@ template <described M>
     const auto dst = out.first(*size);
     detail::clear_bytes<M>(dst, std::make_index_sequence<max_size_v<M>>{});
     detail::write_fixed<M>(dst, std::make_index_sequence<detail::fixed_count_v<M>>{});
-    const M copy = m;  // a local cannot alias `out`: its loads need not wait behind byte stores
-    detail::store_record<M, 0>(copy, dst, fields);
+    if constexpr (sizeof(M) > 16) {
+        const M copy = m;  // a local cannot alias `out`: its loads need not wait behind byte stores, so wide fields merge
+        detail::store_record<M, 0>(copy, dst, fields);
+    } else {
+        detail::store_record<M, 0>(m, dst, fields);  // a few bytes: copied as they are
+    }
     return *size;
 }
 
