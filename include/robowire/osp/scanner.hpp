@@ -28,15 +28,17 @@ public:
     constexpr void feed(std::span<const std::uint8_t> chunk, OnFrame&& on_frame) {
         const std::uint8_t* p = chunk.data();
         const std::size_t n = chunk.size();
+        if (n < frame_size) {  // short chunks (a UART's few bytes per read): byte by byte
+            for (std::size_t k = 0; k < n; ++k) push_byte(p[k], on_frame);
+            return;
+        }
         std::size_t i = 0;
         while (i < n) {
             if (len_ != 0) {  // a partial candidate: complete it in one go if the chunk has the rest
                 const std::size_t had = len_, need = frame_size - had;
                 if (n - i >= need) {
-                    for (std::size_t k = 0; k < need; ++k) buf_[had + k] = p[i + k];
-                    bool ok = true;
-                    for (std::size_t k = had; k < frame_size && ok; ++k) ok = prefix_ok(k);
-                    if (ok) {
+                    copy(buf_.data() + had, p + i, need);
+                    if (buf_[1] == start2 && buf_[8] == end1 && buf_[9] == end2) {
                         len_ = 0;
                         ++frames_;
                         i += need;
@@ -47,15 +49,17 @@ public:
                 push_byte(p[i++], on_frame);
                 continue;
             }
-            if (n - i < frame_size) {  // a short tail: byte by byte
-                while (i < n) push_byte(p[i++], on_frame);
-                break;
-            }
             if (p[i] != start1) {  // skip noise up to the next start byte
                 const std::size_t start = find_start(p, i + 1, n);
                 skipped_ += start - i;
                 i = start;
-                if (n - i < frame_size) continue;
+                if (i == n) break;
+            }
+            if (n - i < frame_size) {  // a short tail from a start byte: kept whole as the partial candidate
+                len_ = n - i;
+                copy(buf_.data(), p + i, len_);
+                if ((len_ > 1 && buf_[1] != start2) || (len_ > 8 && buf_[8] != end1)) resync();
+                break;
             }
             if (p[i + 1] == start2 && p[i + 8] == end1 && p[i + 9] == end2) {  // a whole frame in the chunk
                 ++frames_;
@@ -112,12 +116,29 @@ public:
 private:
     // Index of the next start byte in p[from..n), or n.
     static constexpr std::size_t find_start(const std::uint8_t* p, std::size_t from, std::size_t n) noexcept {
+        if (from >= n) return n;
         if (!std::is_constant_evaluated()) {
             const void* hit = std::memchr(p + from, start1, n - from);
             return hit ? static_cast<std::size_t>(static_cast<const std::uint8_t*>(hit) - p) : n;
         }
         while (from < n && p[from] != start1) ++from;
         return from;
+    }
+    // Copies n < frame_size bytes: at run time two fixed-size (overlapping) copies, no call.
+    static constexpr void copy(std::uint8_t* to, const std::uint8_t* from, std::size_t n) noexcept {
+        if (std::is_constant_evaluated()) {
+            for (std::size_t k = 0; k < n; ++k) to[k] = from[k];
+            return;
+        }
+        const auto pair = [&](auto width) {
+            constexpr std::size_t w = decltype(width)::value;
+            std::memcpy(to, from, w);
+            std::memcpy(to + n - w, from + n - w, w);
+        };
+        if (n >= 8) pair(std::integral_constant<std::size_t, 8>{});
+        else if (n >= 4) pair(std::integral_constant<std::size_t, 4>{});
+        else if (n >= 2) pair(std::integral_constant<std::size_t, 2>{});
+        else if (n == 1) to[0] = from[0];
     }
     // Is buf_[k] what a frame has at position k (start and end markers)?
     constexpr bool prefix_ok(std::size_t k) const noexcept {
