@@ -6,13 +6,35 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <initializer_list>
+#include <type_traits>
 #include <span>
 #include <string_view>
 
 #include "result.hpp"
 
 namespace robowire {
+
+namespace detail {
+// Copies n <= 16 bytes. At run time: two fixed-size (overlapping) copies,
+// never a call to memcpy.
+constexpr void copy_small(std::uint8_t* to, const std::uint8_t* from, std::size_t n) noexcept {
+    if (std::is_constant_evaluated()) {
+        for (std::size_t k = 0; k < n; ++k) to[k] = from[k];
+        return;
+    }
+    const auto pair = [&](auto width) {
+        constexpr std::size_t w = decltype(width)::value;
+        std::memcpy(to, from, w);
+        std::memcpy(to + n - w, from + n - w, w);
+    };
+    if (n >= 8) pair(std::integral_constant<std::size_t, 8>{});
+    else if (n >= 4) pair(std::integral_constant<std::size_t, 4>{});
+    else if (n >= 2) pair(std::integral_constant<std::size_t, 2>{});
+    else if (n == 1) to[0] = from[0];
+}
+}  // namespace detail
 
 // Up to N bytes, stored inline. Unused capacity is always zero, so the default
 // comparison compares exactly the used bytes.

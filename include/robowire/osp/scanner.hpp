@@ -37,7 +37,7 @@ public:
             if (len_ != 0) {  // a partial candidate: complete it in one go if the chunk has the rest
                 const std::size_t had = len_, need = frame_size - had;
                 if (n - i >= need) {
-                    copy(buf_.data() + had, p + i, need);
+                    robowire::detail::copy_small(buf_.data() + had, p + i, need);
                     if (buf_[1] == start2 && buf_[8] == end1 && buf_[9] == end2) {
                         len_ = 0;
                         ++frames_;
@@ -57,7 +57,7 @@ public:
             }
             if (n - i < frame_size) {  // a short tail from a start byte: kept whole as the partial candidate
                 len_ = n - i;
-                copy(buf_.data(), p + i, len_);
+                robowire::detail::copy_small(buf_.data(), p + i, len_);
                 if ((len_ > 1 && buf_[1] != start2) || (len_ > 8 && buf_[8] != end1)) resync();
                 break;
             }
@@ -123,22 +123,6 @@ private:
         }
         while (from < n && p[from] != start1) ++from;
         return from;
-    }
-    // Copies n < frame_size bytes: at run time two fixed-size (overlapping) copies, no call.
-    static constexpr void copy(std::uint8_t* to, const std::uint8_t* from, std::size_t n) noexcept {
-        if (std::is_constant_evaluated()) {
-            for (std::size_t k = 0; k < n; ++k) to[k] = from[k];
-            return;
-        }
-        const auto pair = [&](auto width) {
-            constexpr std::size_t w = decltype(width)::value;
-            std::memcpy(to, from, w);
-            std::memcpy(to + n - w, from + n - w, w);
-        };
-        if (n >= 8) pair(std::integral_constant<std::size_t, 8>{});
-        else if (n >= 4) pair(std::integral_constant<std::size_t, 4>{});
-        else if (n >= 2) pair(std::integral_constant<std::size_t, 2>{});
-        else if (n == 1) to[0] = from[0];
     }
     // Is buf_[k] what a frame has at position k (start and end markers)?
     constexpr bool prefix_ok(std::size_t k) const noexcept {
