@@ -92,8 +92,7 @@ public:
         : value_(std::in_place), ok_(true) {}
     // Turns this result into an error.
     constexpr result& operator=(robowire::error e) noexcept {
-        if (ok_) std::destroy_at(&value_);  // the value's bytes are dead from here
-        std::construct_at(&error_, e);
+        std::construct_at(&error_, e);  // makes the error the active member
         ok_ = false;
         return *this;
     }
