@@ -32,18 +32,18 @@ constexpr int key_of(std::size_t key_offset) noexcept {  // -1: M has no fixed b
 // Alternative index for each value of the key byte (variant_size: none).
 template <class Variant, std::size_t KeyOffset>
 inline constexpr auto key_index_v = [] {
-    static_assert(std::variant_size_v<Variant> < 255, "decode_variant: too many alternatives");
+    constexpr std::size_t count = std::variant_size_v<Variant>;
+    static_assert(count < 255, "decode_variant: too many alternatives");
+    const auto keys = []<std::size_t... I>(std::index_sequence<I...>) {
+        return std::array<int, count>{key_of<std::variant_alternative_t<I, Variant>>(KeyOffset)...};
+    }(std::make_index_sequence<count>{});
     std::array<std::uint8_t, 256> index{};
-    index.fill(static_cast<std::uint8_t>(std::variant_size_v<Variant>));
-    [&]<std::size_t... I>(std::index_sequence<I...>) {
-        ((key_of<std::variant_alternative_t<I, Variant>>(KeyOffset) >= 0 &&
-                  index[static_cast<std::size_t>(key_of<std::variant_alternative_t<I, Variant>>(KeyOffset))] ==
-                      std::variant_size_v<Variant>
-              ? void(index[static_cast<std::size_t>(key_of<std::variant_alternative_t<I, Variant>>(KeyOffset))] =
-                         static_cast<std::uint8_t>(I))
-              : void()),
-         ...);
-    }(std::make_index_sequence<std::variant_size_v<Variant>>{});
+    index.fill(static_cast<std::uint8_t>(count));
+    for (std::size_t i = 0; i < count; ++i) {
+        if (keys[i] < 0) continue;
+        auto& slot = index[static_cast<std::size_t>(keys[i])];
+        if (slot == count) slot = static_cast<std::uint8_t>(i);  // the first alternative with that key
+    }
     return index;
 }();
 

@@ -35,10 +35,10 @@ private:
 };
 
 namespace detail {
+// DEV << 8 | CMD of message M (its fixed bytes 2 and 3).
 template <class M>
 constexpr std::uint16_t key_of() noexcept {
-    constexpr const auto& t = table_v<M>;
-    return static_cast<std::uint16_t>(t.fixed[2].value << 8 | t.fixed[3].value);
+    return static_cast<std::uint16_t>(robowire::detail::key_of<M>(2) << 8 | robowire::detail::key_of<M>(3));
 }
 // Fixed bytes checked by the frame already: makes the message and decodes its fields in place.
 template <std::size_t I>
