@@ -236,7 +236,7 @@ std::string key_bytes() {
 template <class M>
 void list_message(bool fields) {
     constexpr auto& t = robowire::table_v<M>;
-    const std::size_t lo = t.min_size(), hi = t.accepted_max();
+    const std::size_t lo = t.min_size(), hi = t.max_input();
     std::printf("  %-26.*s %-8s %s bytes\n", static_cast<int>(t.name.size()), t.name.data(), key_bytes<M>().c_str(),
                 lo == hi ? std::to_string(lo).c_str() : (std::to_string(lo) + "-" + std::to_string(hi)).c_str());
     if (!fields) return;

@@ -43,7 +43,7 @@ constexpr auto table_of(std::type_identity<msg>) {
                            field{"on", &msg::on, 11, wire::u8{}}, field{"gain", &msg::gain, 12, wire::f32le{}},
                            field{"extra", &msg::extra, 16, wire::u8{}, range{0, 9}});
 }
-// 0:0x40 | 1-4 name text<4> | 5 reserved | 6 x | 7 reserved (wire_size 8)
+// 0:0x40 | 1-4 name text<4> | 5 reserved | 6 x | 7 reserved (declared_size 8)
 struct named {
     robowire::text<4> name{};
     std::uint8_t x{};
@@ -52,7 +52,7 @@ constexpr auto table_of(std::type_identity<named>) {
     using namespace robowire;
     auto t = make_table<named>("named", {{0, 0x40, errc::bad_command}}, field{"name", &named::name, 1, wire::text{}},
                                field{"x", &named::x, 6, wire::u8{}, range{0, 9}});
-    t.wire_size = 8;
+    t.declared_size = 8;
     return t;
 }
 }  // namespace demo
@@ -80,7 +80,7 @@ constexpr error encode_error(const msg& m) { return encode(m).error(); }
 TEST_CASE("table sizes come from the fields", "[core][table]") {
     STATIC_REQUIRE(min_size_v<msg> == 12);
     STATIC_REQUIRE(max_size_v<msg> == 17);
-    STATIC_REQUIRE(table_v<demo::pair>.extent() == 3);
+    STATIC_REQUIRE(table_v<demo::pair>.max_size() == 3);
     STATIC_REQUIRE(table_v<msg>.field_count == 8);
     STATIC_REQUIRE(std::get<2>(table_v<msg>.fields).count == 2);
     STATIC_REQUIRE(std::get<2>(table_v<msg>.fields).size == 6);

@@ -153,7 +153,7 @@ constexpr std::size_t element_size() noexcept {
     if constexpr (W::kind == wire_kind::bits) return 1;
     else if constexpr (W::kind == wire_kind::text) return text_traits<E>::size;
     else if constexpr (W::kind == wire_kind::tail) return 0;
-    else if constexpr (W::kind == wire_kind::record) return table_v<E>.extent();
+    else if constexpr (W::kind == wire_kind::record) return table_v<E>.max_size();
     else return sizeof(typename W::raw_type);
 }
 
@@ -225,21 +225,22 @@ struct message_table {
     std::string_view name;
     std::array<fixed_byte, K> fixed;
     std::tuple<F...> fields;
-    std::size_t max_input = 0;  // longest accepted input; 0: extent(). Longer is decoded, the rest ignored.
-    std::size_t wire_size = 0;  // nonzero: the message is at least this long (reserved bytes after the last field)
+    std::size_t declared_max_input = 0;  // longest accepted input; 0: max_size(). Longer is decoded, the rest ignored.
+    std::size_t declared_size = 0;       // nonzero: the message is at least this long (reserved bytes after the last field)
 
     static constexpr std::size_t field_count = sizeof...(F);
 
-    // Bytes up to the end of the last field (with every optional block).
-    constexpr std::size_t extent() const noexcept {
-        std::size_t e = wire_size;
+    // Three sizes: min_size() <= max_size() <= max_input().
+    // Longest frame: bytes up to the end of the last field (with every optional block).
+    constexpr std::size_t max_size() const noexcept {
+        std::size_t e = declared_size;
         for (const auto& b : fixed) e = b.offset + 1 > e ? b.offset + 1 : e;
         std::apply([&](const auto&... f) { ((e = f.end() > e ? f.end() : e), ...); }, fields);
         return e;
     }
     // Shortest valid input: fixed bytes and every non-optional field.
     constexpr std::size_t min_size() const noexcept {
-        std::size_t e = wire_size;
+        std::size_t e = declared_size;
         for (const auto& b : fixed) e = b.offset + 1 > e ? b.offset + 1 : e;
         auto req = [&](const auto& f) {
             const std::size_t end = f.kind == wire_kind::tail ? f.offset : f.end();
@@ -248,8 +249,8 @@ struct message_table {
         std::apply([&](const auto&... f) { (req(f), ...); }, fields);
         return e;
     }
-    constexpr std::size_t max_size() const noexcept { return extent(); }
-    constexpr std::size_t accepted_max() const noexcept { return max_input ? max_input : extent(); }
+    // Longest accepted input (longer than max_size(): the rest is ignored).
+    constexpr std::size_t max_input() const noexcept { return declared_max_input ? declared_max_input : max_size(); }
 };
 
 // Builds a message table: name, fixed bytes, fields in offset order.
@@ -669,7 +670,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr void clear_bytes(std::span<std::uint8_t> out, s
 // error, `out`'s fields are unspecified.
 template <described M>
 [[nodiscard]] constexpr error decode_into(M& out, std::span<const std::uint8_t> in) noexcept {
-    constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.accepted_max(), extent = table_v<M>.extent();
+    constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input(), extent = table_v<M>.max_size();
     if (const error e = detail::check_fixed<M>(in, std::make_index_sequence<detail::fixed_count_v<M>>{}); e.code != errc::ok)
         return e;
     if (in.size() < min) return fail(errc::too_short, in.size());
@@ -683,11 +684,11 @@ template <described M>
 
 namespace detail {
 // Fields only, no fixed-byte or length checks: for dispatchers that have
-// checked both already (`in` holds at least M's extent).
+// checked both already (`in` holds at least max_size() bytes).
 template <described M>
 ROBOWIRE_ALWAYS_INLINE constexpr error decode_fields(M& out, std::span<const std::uint8_t> in) noexcept {
     error err{};
-    (void)decode_record<M, 0>(out, in.first(table_v<M>.extent()), err,
+    (void)decode_record<M, 0>(out, in.first(table_v<M>.max_size()), err,
                               std::make_index_sequence<field_count_v<M>>{});
     return err;
 }

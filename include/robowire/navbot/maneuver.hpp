@@ -65,7 +65,7 @@ constexpr auto table_of(std::type_identity<maneuver>) {
         field{"switch_c", &maneuver::switch_c, 11, wire::u8{}}, field{"switch_d", &maneuver::switch_d, 12, wire::u8{}},
         field{"ball_x", &maneuver::ball_x, 13, wire::i8{}, range{-5, 5}},
         field{"ball_y", &maneuver::ball_y, 14, wire::i8{}, range{-5, 5}});
-    t.wire_size = frame_size;
+    t.declared_size = frame_size;
     return t;
 }
 
