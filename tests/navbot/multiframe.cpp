@@ -192,6 +192,9 @@ TEST_CASE("navbot: repeated frames", "[navbot][multiframe]") {
     CHECK(r.push(make_frame(0x10, 0, 'd')).value() == reassembly::complete);
     CHECK(r.push(make_frame(0x10, 0, 'd')).value() == reassembly::complete);
     CHECK(r.payload().size() == 15);
+    // a late repeat of the multi-frame message's last frame is still a repeat, not a one-frame message
+    CHECK(r.push(make_frame(2, 0, 'c')).value() == reassembly::duplicate);
+    CHECK(r.command() == 0x10);
 }
 
 TEST_CASE("navbot: the sender starts a message over", "[navbot][multiframe]") {

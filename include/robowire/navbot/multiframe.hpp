@@ -167,6 +167,7 @@ public:
         }
         if (skipping_ && f.command == skip_command_) {
             if (f.remaining == 0) skipping_ = false;
+            remember(f);  // so that a repeat of it is not taken for a new message
             return reassembly::discarded;
         }
         if (state_ == state::idle) return start(f);
@@ -186,6 +187,7 @@ public:
         }
         if (f.remaining + 1 != last_remaining_) {  // frames lost
             drop();
+            remember(f);
             if (f.remaining != 0) skip(f.command);
             return fail(errc::bad_sequence, 3);
         }
@@ -213,6 +215,7 @@ public:
     // Forgets everything: partial message, the message being discarded, the last frame.
     constexpr void clear() noexcept {
         drop();
+        has_last_ = false;
         skipping_ = false;
     }
 
@@ -224,7 +227,11 @@ private:
         drop();
         command_ = f.command;
         if ((std::size_t{f.remaining} + 1) > Capacity / payload_size) {
-            if (f.remaining != 0) skip(f.command);
+            has_last_ = false;
+            if (f.remaining != 0) {
+                remember(f);
+                skip(f.command);
+            }
             return fail(errc::capacity_exceeded, 3);
         }
         return append(f);
@@ -232,10 +239,9 @@ private:
     constexpr result<reassembly> append(const frame& f) noexcept {
         for (std::size_t i = 0; i < payload_size; ++i) buf_[size_ + i] = f.payload[i];
         size_ += payload_size;
-        // repeats are recognised inside multi-frame messages only: a one-frame
-        // message sent twice (e.g. the same maneuver) is two messages
-        has_last_ = f.remaining != 0 || size_ > payload_size;
-        last_ = f;
+        // repeats are recognised for frames of multi-frame messages only: a
+        // one-frame message sent twice (e.g. the same maneuver) is two messages
+        if (f.remaining != 0 || size_ > payload_size) remember(f);
         last_remaining_ = f.remaining;
         state_ = f.remaining == 0 ? state::complete : state::collecting;
         return f.remaining == 0 ? reassembly::complete : reassembly::need_more;
@@ -243,7 +249,10 @@ private:
     constexpr void drop() noexcept {
         state_ = state::idle;
         size_ = 0;
-        has_last_ = false;
+    }
+    constexpr void remember(const frame& f) noexcept {
+        has_last_ = true;
+        last_ = f;
     }
     constexpr void skip(std::uint8_t command) noexcept {
         skipping_ = true;
@@ -252,7 +261,7 @@ private:
 
     std::array<std::uint8_t, Capacity> buf_{};
     std::size_t size_ = 0;
-    frame last_{};                     // the last frame taken into a multi-frame message
+    frame last_{};                     // the last frame seen of a multi-frame message (if has_last_)
     std::uint8_t last_remaining_ = 0;  // `remaining` of the last frame taken
     std::uint8_t command_ = 0;
     std::uint8_t skip_command_ = 0;    // command of the broken message being discarded
