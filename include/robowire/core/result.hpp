@@ -122,7 +122,7 @@ public:
 
 private:
     robowire::error error_;
-    char what_[112] = {};
+    char what_[144] = {};  // longest text: 51 + 48 + 9 + 20 digits
 };
 #endif
 
