@@ -1,6 +1,7 @@
 // robowire/core/result.hpp - error codes and result<T>: no heap. Accessing
 // the wrong state throws robowire::bad_result_access when exceptions are
-// enabled; without exceptions it calls a replaceable handler (default: trap).
+// enabled; without exceptions it calls ROBOWIRE_BAD_RESULT_ACCESS_HANDLER
+// if defined, then traps.
 #pragma once
 
 #include <cstddef>
@@ -73,22 +74,20 @@ struct error {
     friend constexpr bool operator==(const error&, const error&) = default;
 };
 
-// Called, when exceptions are disabled, by value(), operator* and operator->
-// of a result holding an error (and by error() of one holding a value, with
-// errc::ok). It must not return (log, reset, halt...). Install one with
-// set_bad_result_access_handler; the default (nullptr) traps.
-using bad_result_access_handler = void (*)(error) noexcept;
+}  // namespace robowire
 
-namespace detail {
-inline bad_result_access_handler bad_access_handler = nullptr;
-}  // namespace detail
+// Without exceptions, value(), operator* and operator-> of a result holding
+// an error (and error() of one holding a value, with errc::ok) call the
+// function named by ROBOWIRE_BAD_RESULT_ACCESS_HANDLER, if defined, then
+// trap. Define it for every translation unit (-DROBOWIRE_BAD_RESULT_ACCESS_HANDLER=on_bad_access)
+// and define that function once, at global scope:
+//   void on_bad_access(robowire::error e) noexcept { log(e); reset(); }   // must not return
+// No handler: trap. A macro, not a settable pointer, so that the library has no static data.
+#if defined(ROBOWIRE_BAD_RESULT_ACCESS_HANDLER) && !defined(__cpp_exceptions)
+void ROBOWIRE_BAD_RESULT_ACCESS_HANDLER(robowire::error) noexcept;
+#endif
 
-// Installs `h` (nullptr: trap) and returns the previous handler.
-inline bad_result_access_handler set_bad_result_access_handler(bad_result_access_handler h) noexcept {
-    const auto old = detail::bad_access_handler;
-    detail::bad_access_handler = h;
-    return old;
-}
+namespace robowire {
 
 #if defined(__cpp_exceptions)
 // Thrown by value(), operator* and operator-> of a result holding an error
@@ -184,7 +183,11 @@ constexpr void compile_time_bad_access(errc code) noexcept {
 #if defined(__cpp_exceptions)
     throw robowire::bad_result_access(e);
 #else
-    if (bad_access_handler != nullptr) bad_access_handler(e);
+#if defined(ROBOWIRE_BAD_RESULT_ACCESS_HANDLER)
+    ::ROBOWIRE_BAD_RESULT_ACCESS_HANDLER(e);
+#else
+    (void)e;
+#endif
     __builtin_trap();
 #endif
 }
@@ -221,7 +224,7 @@ public:
     constexpr explicit operator bool() const noexcept { return ok_; }
 
     // The value. On an error: bad_result_access (exceptions enabled), else
-    // the bad_result_access_handler; in a constant expression, a compile error.
+    // ROBOWIRE_BAD_RESULT_ACCESS_HANDLER and a trap; in a constant expression, a compile error.
     constexpr T& value() & noexcept(detail::access_noexcept) { check(true); return value_.v; }
     constexpr const T& value() const& noexcept(detail::access_noexcept) { check(true); return value_.v; }
     // From a temporary: the value itself, so `for (auto& x : make().value())` does not dangle.
