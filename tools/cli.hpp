@@ -69,8 +69,8 @@ std::string render_text(std::string_view protocol, const outcome& o);
 std::string render_json(std::string_view protocol, const outcome& o);
 // {"type": "error", "error": ..., plus extra string members}.
 std::string render_json_error(std::string_view error, const std::vector<std::pair<std::string, std::string>>& extra);
-// {"type": "counters", name: value...}.
-std::string render_json_counters(const std::vector<std::pair<std::string, std::uint64_t>>& counters);
+// {"type": "counters", name: value..., "input": input (when not empty)}.
+std::string render_json_counters(const std::vector<std::pair<std::string, std::uint64_t>>& counters, std::string_view input);
 
 // ---- one protocol (buwizz3.cpp, navbot.cpp, osp.cpp)
 enum class direction { any, command, notification };

@@ -29,10 +29,10 @@ inline std::string hex2(unsigned v) {
     std::snprintf(b, sizeof b, "0x%02X", v & 0xFFu);
     return b;
 }
-// Rounded to 9 significant digits (13.000000000000002 -> 13).
+// Rounded to 15 significant digits (13.000000000000002 -> 13).
 inline double tidy(double v) {
     char b[48];
-    std::snprintf(b, sizeof b, "%.9g", v);
+    std::snprintf(b, sizeof b, "%.15g", v);
     return std::strtod(b, nullptr);
 }
 inline std::string plural(std::size_t n, std::string_view one, std::string_view many) {
@@ -177,7 +177,9 @@ std::string describe_error(const robowire::error& e, std::string_view got = {}) 
     std::string s(robowire::to_string(e.code));
     s += " at byte " + std::to_string(e.offset);
     const auto loc = locate<M>(e.offset);
-    if (loc) {
+    if (loc && e.code == errc::missing_field) {
+        s += ": give " + loc->path.substr(0, loc->path.find_first_of("[.")) + " too";
+    } else if (loc) {
         s += ": " + std::string(robowire::table_v<M>.name) + "." + loc->path;
         if (!got.empty()) s += " = " + std::string(got);
         if (!loc->valid.empty()) s += ", valid " + loc->valid;
@@ -194,13 +196,20 @@ bool carries_fixed_bytes(std::span<const std::uint8_t> in) {
     return !robowire::table_v<M>.fixed.empty();
 }
 // A decode error of variant V, naming the message and field when the bytes say which.
+// Length errors name the message's valid lengths instead of a field.
 template <class V>
 std::string describe_decode_error(std::span<const std::uint8_t> in, const robowire::error& e) {
     std::string s;
+    const bool length = e.code == errc::too_short || e.code == errc::too_long || e.code == errc::bad_length;
     for_each_alternative<V>([&](auto t) {
         using M = typename decltype(t)::type;
         if (!s.empty() || !carries_fixed_bytes<M>(in)) return;
-        s = describe_error<M>(e, e.offset < in.size() ? hex2(in[e.offset]) : std::string{});
+        if (length)
+            s = std::string(robowire::to_string(e.code)) + " at byte " + std::to_string(e.offset) + ": " +
+                std::string(robowire::table_v<M>.name) + " is " + valid_lengths<M>() + ", " +
+                std::to_string(in.size()) + " given";
+        else
+            s = describe_error<M>(e, e.offset < in.size() ? hex2(in[e.offset]) : std::string{});
     });
     if (s.empty()) s = std::string(robowire::to_string(e.code)) + " at byte " + std::to_string(e.offset);
     return s;
@@ -358,6 +367,12 @@ void list_fields(std::string& out, std::size_t base, std::size_t stride_note_bas
                     bits += "bit " + std::to_string(b.lo);
                     if (b.width > 1) bits += "-" + std::to_string(b.lo + b.width - 1);
                     bits += " " + std::string(b.name);
+                    if (b.width > 1) {
+                        std::string vals;
+                        for (std::size_t v = 0; v < b.values.size() && v < (1u << b.width); ++v)
+                            vals += (vals.empty() ? "" : "/") + std::string(b.values[v]);
+                        bits += " (" + vals + ")";
+                    }
                 }
                 if (!bits.empty()) valid += "; bits: " + bits;
             }

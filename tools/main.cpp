@@ -30,6 +30,11 @@ const protocol* find_protocol(std::string_view name) {
 
 namespace {
 
+// Accepts a value that does not start with '-' (the option's type then checks it is a number).
+const CLI::Validator not_negative(
+    [](std::string& v) { return !v.empty() && v[0] == '-' ? std::string("must not be negative: ") + v : std::string(); }, "NOT NEGATIVE",
+    "not_negative");
+
 void out_line(const std::string& s) {
     std::fwrite(s.data(), 1, s.size(), stdout);
     std::fputc('\n', stdout);
@@ -178,7 +183,8 @@ struct osp_printer {
     void counters(const char* input) const {
         if (json) {
             out_line(render_json_counters({{"frames", scanner.frames()}, {"skipped_bytes", scanner.skipped()},
-                                           {"false_starts", scanner.false_starts()}}));
+                                           {"false_starts", scanner.false_starts()}},
+                                          input ? input : ""));
             return;
         }
         std::printf("frames %llu, skipped bytes %llu, false starts %llu%s%s\n", static_cast<unsigned long long>(scanner.frames()),
@@ -321,8 +327,8 @@ int main(int argc, char** argv) {
     mon->add_option("device", mon_opt.device, "serial device, e.g. /dev/ttyUSB0")->required();
     mon->add_option("--baud", mon_opt.baud, "9600, 19200, 38400, 57600, 115200 (default), 230400, 460800 or 921600")
         ->check(CLI::IsMember({9600L, 19200L, 38400L, 57600L, 115200L, 230400L, 460800L, 921600L}));
-    mon->add_option("--count", mon_opt.count, "stop after N frames")->check(CLI::NonNegativeNumber);
-    mon->add_option("--timeout", mon_opt.timeout, "stop after S seconds")->check(CLI::NonNegativeNumber);
+    mon->add_option("--count", mon_opt.count, "stop after N frames")->check(not_negative);
+    mon->add_option("--timeout", mon_opt.timeout, "stop after S seconds")->check(not_negative);
     mon->add_flag("--json", mon_opt.json, "JSON lines on stdout: messages, errors, counters (each with a \"type\")");
 
     add_extra_commands(app);

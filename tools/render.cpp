@@ -112,9 +112,10 @@ std::string render_json_error(std::string_view error, const std::vector<std::pai
     return dump(j);
 }
 
-std::string render_json_counters(const std::vector<std::pair<std::string, std::uint64_t>>& counters) {
+std::string render_json_counters(const std::vector<std::pair<std::string, std::uint64_t>>& counters, std::string_view input) {
     json j = {{"type", "counters"}};
     for (const auto& [k, v] : counters) j[k] = v;
+    if (!input.empty()) j["input"] = input;
     return dump(j);
 }
 
