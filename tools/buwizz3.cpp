@@ -31,10 +31,16 @@ outcome decode_as(std::span<const std::uint8_t> in, direction d) {
 }
 
 outcome decode(std::span<const std::uint8_t> in, direction d) {
-    if (d != direction::any || in.empty()) return decode_as(in, d == direction::any ? direction::command : d);
+    if (in.empty()) return decode_as(in, direction::command);
     bool cmd_fits = false, note_fits = false;
     const auto c = by_command<bw::command>(in[0], in.size(), cmd_fits);
     const auto n = by_command<bw::notification>(in[0], in.size(), note_fits);
+    if (d != direction::any) {
+        outcome o = decode_as(in, d);
+        if (d == direction::command && !c && n) o.error += " (" + hex2(in[0]) + " is the notification " + n->first + ")";
+        if (d == direction::notification && !n && c) o.error += " (" + hex2(in[0]) + " is the command " + c->first + ")";
+        return o;
+    }
     if (c && !n) return decode_as(in, direction::command);
     if (n && !c) return decode_as(in, direction::notification);
     if (!c && !n) {

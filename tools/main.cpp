@@ -337,6 +337,10 @@ int main(int argc, char** argv) {
         std::fputs(app.help().c_str(), stderr);
         return exit_usage;
     }
+    if (argv[1][0] != '-' && app.get_subcommands([&](CLI::App* sub) { return sub->get_name() == argv[1]; }).empty()) {
+        std::fprintf(stderr, "error: unknown command %s (robowire --help)\n", argv[1]);
+        return exit_usage;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
