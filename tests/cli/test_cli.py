@@ -357,5 +357,43 @@ if shutil.which("socat"):
 else:
     check(False, "socat is not installed")
 
+# ---- the examples in docs/cli.md and README.md are what the tool prints ("..." stands for the rest)
+import shlex
+root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+
+def examples(lines, indent):
+    found, cur = [], None
+    for line in lines:
+        if line.startswith(indent + "$ robowire "):
+            cur = (line[len(indent) + 2:], [])
+            found.append(cur)
+        elif cur is not None and line.startswith(indent) and line.strip() and not line.startswith("```"):
+            cur[1].append(line[len(indent):])
+        else:
+            cur = None
+    return found
+
+def check_examples(where, found):
+    check(len(found) >= 3, f"{where}: examples found")
+    for cmd, want in found:
+        if not want:
+            continue  # a command shown without output (a device)
+        rc, out, err = run(*shlex.split(cmd)[1:])
+        got = out.splitlines() + err.splitlines()
+        if "..." in [w.strip() for w in want]:
+            n = [w.strip() for w in want].index("...")
+            ok = got[:n] == want[:n]
+        else:
+            ok = got == want
+        check(ok, f"{where}: {cmd}: {got!r} != {want!r}")
+
+with open(os.path.join(root, "docs", "cli.md")) as fh:
+    doc = fh.read()
+check_examples("docs/cli.md", examples(doc.split("## EXAMPLES")[1].split("\n## ")[0].splitlines(), "    "))
+with open(os.path.join(root, "README.md")) as fh:
+    readme = fh.read()
+block = readme.split("The demo ends with the command-line tool")[1].split("```")[1]
+check_examples("README.md", examples(block.splitlines(), ""))
+
 print(f"{passed} passed, {failed} failed")
 sys.exit(1 if failed else 0)
