@@ -9,6 +9,8 @@
 #include <optional>
 
 #include "../core/bits.hpp"
+#include "../core/decode.hpp"
+#include "../core/encode.hpp"
 #include "../core/flag_bits.hpp"
 #include "../core/table.hpp"
 
