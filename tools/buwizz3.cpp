@@ -66,15 +66,10 @@ std::string list(bool fields) {
     return out;
 }
 
-outcome encode(std::string_view message, const std::vector<std::pair<std::string, std::string>>& values) {
-    if (auto o = encode_in<bw::command>(message, values)) return *o;
-    if (auto o = encode_in<bw::notification>(message, values)) return *o;
-    return failure(exit_usage, "unknown message " + std::string(message) + " (robowire list buwizz3)");
-}
 }  // namespace
 
 const protocol& buwizz3_protocol() {
-    static const protocol p{"buwizz3", "BLE; byte 0 = command", true, list, decode, encode};
+    static const protocol p{"buwizz3", "BLE; byte 0 = command", true, list, decode, buwizz3_encode};
     return p;
 }
 

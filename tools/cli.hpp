@@ -3,6 +3,7 @@
 //   render.cpp     a decoded message as text or JSON (nlohmann/json)
 //   describe.hpp   templates over the library's tables (fields, lengths, errors, encode)
 //   buwizz3.cpp, navbot.cpp, osp.cpp   one protocol each, driven by its std::variant of messages
+//   buwizz3_encode.cpp                  BuWizz3's encoders (a translation unit of their own: compile time)
 //   main.cpp       commands and options (CLI11), scan and monitor
 #pragma once
 
@@ -84,6 +85,7 @@ struct protocol {
     outcome (*encode)(std::string_view message, const std::vector<std::pair<std::string, std::string>>& values);
 };
 const protocol& buwizz3_protocol();
+outcome buwizz3_encode(std::string_view message, const std::vector<std::pair<std::string, std::string>>& values);  // buwizz3_encode.cpp
 const protocol& navbot_protocol();
 const protocol& osp_protocol();
 // Every protocol, in `list` order; nullptr for an unknown name.
