@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Tests of the robowire command-line tool. Usage: test_cli.py PATH_TO_ROBOWIRE
-Golden vectors are the unit tests' (worked out by hand from the documents).
+Golden vectors are the unit tests' (worked out by hand from the documents);
+physical values are worked out by hand from the documents' units.
 Prints 'N passed, M failed' and exits 1 on any failure."""
 import json, os, shutil, subprocess, sys, tempfile, time
 
@@ -42,7 +43,10 @@ CASES = [
     ("buwizz3", "command", "35 05", "activate_watchdog", {"timeout_s": 5}, ["timeout_s=5"]),
     ("buwizz3", "command", "36 FF 00 00 00 FF 00 00 00 FF 10 20 30 1F F0 08 55", "set_led_status",
      {"colors": [{"r": 255, "g": 0, "b": 0}, {"r": 0, "g": 255, "b": 0}, {"r": 0, "g": 0, "b": 255}, {"r": 16, "g": 32, "b": 48}],
-      "blink": [{"frequency_hz": 1, "duty": 15}, {"frequency_hz": 15, "duty": 0}, {"frequency_hz": 0, "duty": 8}, {"frequency_hz": 5, "duty": 5}]},
+      "blink": [{"frequency_hz": 1, "frequency_hz_physical": {"value": 1, "unit": "Hz"}, "duty": 15, "duty_physical": {"value": 16, "unit": "/16"}},
+                {"frequency_hz": 15, "frequency_hz_physical": {"value": 15, "unit": "Hz"}, "duty": 0, "duty_physical": {"value": 1, "unit": "/16"}},
+                {"frequency_hz": 0, "frequency_hz_physical": {"value": 0, "unit": "Hz"}, "duty": 8, "duty_physical": {"value": 9, "unit": "/16"}},
+                {"frequency_hz": 5, "frequency_hz_physical": {"value": 5, "unit": "Hz"}, "duty": 5, "duty_physical": {"value": 6, "unit": "/16"}}]},
      ["colors=255,0,0,0,255,0,0,0,255,16,32,48", "blink=1,15,15,0,0,8,5,5"]),
     ("buwizz3", "command", "36", "set_led_status", {"colors": None, "blink": None}, []),
     ("buwizz3", "command", "37 0B", "set_accel_lpf", {"setting": "hz_6_25"}, ["setting=hz_6_25"]),
@@ -98,6 +102,15 @@ CASES = [
 def norm(h):
     return h.replace(" ", "").upper()
 
+def close(a, b):
+    return abs(a - b) < 1e-9 * max(1.0, abs(b))
+
+def parse_json(out):
+    try:
+        return json.loads(out)
+    except ValueError:
+        return {}
+
 for proto, direction, hexs, message, fields, enc in CASES:
     extra = ["--direction", direction] if direction else []
     # text
@@ -107,70 +120,209 @@ for proto, direction, hexs, message, fields, enc in CASES:
         check(name in out, f"decode text {message} shows {name}")
     # JSON, parsed
     rc, out, err = run("decode", proto, hexs.replace(" ", ""), "--json", *extra)
-    try:
-        doc = json.loads(out)
-    except ValueError:
-        doc = {}
-    check(rc == 0 and doc.get("protocol") == proto and doc.get("message") == message, f"decode json {message}: {out!r} {err!r}")
+    doc = parse_json(out)
+    check(rc == 0 and doc.get("type") == "message" and doc.get("protocol") == proto and doc.get("message") == message,
+          f"decode json {message}: {out!r} {err!r}")
     for name, want in fields.items():
         got = doc.get("fields", {}).get(name, "missing")
         check(got == want, f"json {message}.{name}: {got!r} != {want!r}")
+    # BuWizz3 without --direction: the command byte (and for 0x23 / 0xAC the length) decides
+    if proto == "buwizz3":
+        rc, out, err = run("decode", proto, hexs, "--json")
+        if hexs == "AC":  # check_charger_settings (1 byte) or charger_settings with no data (1 byte)
+            check(rc == 2 and "--direction command or --direction notification" in err, f"AC needs a direction: {rc} {err!r}")
+        else:
+            check(rc == 0 and parse_json(out).get("message") == message, f"direction inferred for {message}: {rc} {out!r} {err!r}")
     # encode from field values gives the golden bytes; the result decodes to the same message
     rc, out, err = run("encode", proto, message, *enc)
     check(rc == 0 and norm(out.strip()) == norm(hexs), f"encode {message}: {rc} {out!r} {err!r}")
     rc2, out2, _ = run("decode", proto, out.strip(), "--json", *extra)
-    check(rc2 == 0 and json.loads(out2 or "{}").get("message") == message, f"round trip {message}")
+    check(rc2 == 0 and parse_json(out2).get("message") == message, f"round trip {message}")
 
-# hex spellings
-for spelling in ["30 7F 81 00 40 C0 01 21 3F", "307F810040C001213F", "0x30,0x7F,0x81,0x00,0x40,0xC0,0x01,0x21,0x3F",
-                 "30-7F-81-00-40-C0-01-21-3F"]:
-    rc, out, _ = run("decode", "buwizz3", spelling)
-    check(rc == 0 and "set_motor_data" in out, f"hex spelling {spelling}")
+# ---- direction: 0x23 with 25 bytes is the notification, 1 byte the command; a wrong --direction says which it is
+rc, out, _ = run("decode", "buwizz3", "23")
+check(rc == 0 and out.startswith("buwizz3 read_accel_calibration"), "0x23, 1 byte: command")
+rc, out, err = run("decode", "buwizz3", "23 00 00")
+check(rc == 1 and "accel_calibration (25 bytes)" in err and "3 bytes given" in err, f"0x23, 3 bytes: {err!r}")
+rc, out, err = run("decode", "buwizz3", "01 02", "--direction", "command")
+check(rc == 1 and "unknown message at byte 0" in err and "notification status" in err, f"01 as a command: {err!r}")
+rc, out, err = run("decode", "buwizz3", "--direction=notification", "AC")
+check(rc == 0 and out.startswith("buwizz3 charger_settings"), f"--direction=notification: {rc} {err!r}")
 
-# bad input: one line naming the problem and the byte offset, exit status 1
-BAD = [
-    (["decode", "buwizz3", "30 80 00 00 00 00 00 00 00"], "value out of range at byte 1"),
-    (["decode", "buwizz3", "30 00"], "input too short at byte 2"),
-    (["decode", "buwizz3", "99"], "unknown message at byte 0"),
-    (["decode", "buwizz3", "37 04"], "value is not a valid code at byte 1"),
-    (["decode", "navbot", "55 AA 10 00 00 00 00 00 8A 00 01 00 00 00 00 00 00 00 00 00 00 00"], "transcription error"),
-    (["decode", "navbot", "55 AA 10 00 00 00 00 8A 00 01 00 00 00 00 00 00 00 00 00 00"], "value out of range at byte 7"),
-    (["decode", "osp", "FF AA 02 14 01 00 00 00 55 00"], "bad trailer byte at byte 9"),
-    (["decode", "osp", "FF AA 03 01 0A 0B 0C 0D 55 77"], "DEV 03 CMD 01 params 0A 0B 0C 0D"),
-    (["decode", "osp", "FF AA 0G"], "at byte 6"),
-    (["encode", "buwizz3", "set_motor_data", "power=-128,0,0,0,0,0"], "value out of range at byte 1"),
-    (["encode", "buwizz3", "set_motor_data", "power=300,0,0,0,0,0"], "value out of range"),
-    (["encode", "buwizz3", "set_data_period", "period_ms=10"], "value out of range at byte 1"),
-    (["encode", "navbot", "maneuver", "switch_a=jump"], "unknown name"),
-]
-for args, text in BAD:
+# ---- hex spellings (one argument or several, line breaks)
+for spelling in [["30 7F 81 00 40 C0 01 21 3F"], ["307f810040c001213f"], ["0x30,0x7F,0x81,0x00,0x40,0xC0,0x01,0x21,0x3F"],
+                 ["30-7F-81-00-40-C0-01-21-3F"], ["(0x) 30-7F-81-00-40-C0-01-21-3F"], ["30:7F:81:00:40:C0:01:21:3F"],
+                 ["30 7F 81\n00 40 C0\r\n01 21 3F\n"], "30 7F 81 00 40 C0 01 21 3F".split(), ["0x307F8100", "40C0", "01:21:3F"]]:
+    rc, out, err = run("decode", "buwizz3", *spelling)
+    check(rc == 0 and out.startswith("buwizz3 set_motor_data"), f"hex spelling {spelling}: {rc} {err!r}")
+# nRF Connect's copy of a status notification, no --direction
+status_hex = ("01 6D 50 0A 14 1E 28 32 C8 23 F0 FF F0 7F 00 08 0B 0C 0D 0E 0F 7D 30 EC 4C FF 60 79 FE FF 31 64 B3 00 40 E2 01 00 "
+              "4B FF 01 00 01 00 00 00 4C 7F FF FF FF FF FF 7F 00 00 00 3F 00 00 20 C0 00 00 4C 41 F9 2A")
+rc, out, err = run("decode", "buwizz3", "(0x) " + status_hex.replace(" ", "-"))
+check(rc == 0 and out.startswith("buwizz3 status"), f"nRF Connect status: {rc} {err!r}")
+# bad hex: the character and its position (counted from 0 in the arguments joined by one space)
+for args, text in [(["hello"], "'h' at character 0 is not a hex digit"), (["30 7G"], "'G' at character 4"),
+                   (["30", "7G"], "'G' at character 4"), (["3 2 1 9"], "odd number of hex digits in \"3\" at character 0"),
+                   (["307"], "odd number of hex digits in \"307\""), (["FF AA 0G"], "'G' at character 7")]:
+    rc, out, err = run("decode", "buwizz3", *args)
+    check(rc == 1 and "bad hex" in err and text in err and len(err.strip().splitlines()) == 1, f"bad hex {args}: {rc} {err!r}")
+
+# ---- options: --opt=value, unknown options and bad values are usage errors naming the option
+for args, name in [(["decode", "buwizz3", "30", "--jsn"], "--jsn"), (["monitor", "/dev/null", "--baud"], "--baud"),
+                   (["monitor", "/dev/null", "--count", "abc"], "--count"), (["monitor", "/dev/null", "--timeout", "-1"], "--timeout"),
+                   (["monitor", "/dev/null", "--baud", "1234"], "--baud"), (["decode", "buwizz3", "30", "--direction", "up"], "--direction"),
+                   (["decode", "zigbee", "30"], "zigbee"), (["frobnicate"], "frobnicate")]:
     rc, out, err = run(*args)
-    check(rc == 1 and text in err and len(err.strip().splitlines()) == 1, f"bad input {args}: {rc} {err!r}")
-rc, _, err = run("encode", "osp", "nosuch")
-check(rc == 2 and "unknown message" in err, "unknown message name")
-rc, _, err = run("encode", "osp", "soc", "nosuch=1")
-check(rc == 2 and "unknown field" in err, "unknown field name")
+    check(rc == 2 and name in err and out == "", f"usage error {args}: {rc} {err!r}")
+rc, out, err = run("monitor", "/nonexistent/tty0", "--timeout=1")
+check(rc == 1 and "cannot open /nonexistent/tty0: No such file or directory" in err, f"bad device: {rc} {err!r}")
+rc, out, err = run("monitor", "/dev/null", "--timeout=0.2", "--count=5", "--json")
+check(rc == 0 and [parse_json(l).get("type") for l in out.splitlines()] == ["counters"], f"monitor --opt=value: {rc} {out!r}")
 
-# list
+# ---- JSON: physical values next to raw ones, flag bits, enum names, NAVBOT JSON text
+rc, out, err = run("decode", "buwizz3", status_hex, "--json")
+f = parse_json(out).get("fields", {})
+check(f.get("battery_voltage_raw") == 80 and f.get("battery_voltage") == {"value": 13.0, "unit": "V"}, f"battery: {f.get('battery_voltage')}")
+mc = f.get("motor_current", {})  # raw x 0.015 A: 10 20 30 40 50 200
+check(mc.get("unit") == "A" and all(close(a, b) for a, b in zip(mc.get("value", []), [0.15, 0.3, 0.45, 0.6, 0.75, 3.0]))
+      and len(mc.get("value", [])) == 6, f"motor current: {mc}")
+check(f.get("temperature_c_physical") == {"value": 35, "unit": "degC"}, "temperature")
+ac = f.get("accel", {})  # word x 0.488 mg: -16 -> -7.808
+check(ac.get("unit") == "mg" and close(ac.get("value", [0])[0], -7.808), f"accel: {ac}")
+check(f.get("pu_motors", [{}])[3].get("position_physical") == {"value": 2147483647, "unit": "deg"}, "record field physical")
+check(f.get("flags") == 109 and f.get("flags_bits") == {"error": True, "motion_wakeup": False, "long_range_phy": True,
+                                                         "battery": "low", "charging": True, "usb_connected": True},
+      f"flag bits: {f.get('flags_bits')}")
+rc, out, err = run("decode", "buwizz3", status_hex)
+check("109 = error | long_range_phy | battery low | charging | usb_connected" in out, "flag bits, text")
+check("13 V" in out and "battery_voltage_raw" in out, "physical value, text")
+rc, out, _ = run("decode", "buwizz3", "30 7F 81 00 40 C0 01 21 3F", "--json")
+f = parse_json(out).get("fields", {})
+check(f.get("power_physical", {}).get("unit") == "%" and close(f["power_physical"]["value"][0], 100.0)
+      and close(f["power_physical"]["value"][1], -100.0), f"power %: {f.get('power_physical')}")
+check(f.get("brake_flags_bits", {}).get("port1") and f["brake_flags_bits"].get("port6") and not f["brake_flags_bits"].get("port2"),
+      "port bits")
+rc, out, _ = run("decode", "buwizz3", "30 7F 81 00 40 C0 01 21 3F")
+check("33 = port1 | port6" in out and "63 = port1 | port2 | port3 | port4 | port5 | port6" in out, f"port bits text: {out!r}")
+rc, out, _ = run("decode", "osp", "FF AA 02 14 03 05 00 00 55 77", "--json")
+f = parse_json(out).get("fields", {})
+check(f.get("state") == "charging" and f.get("flags_bits") == {"low_voltage": True, "high_voltage": False, "overheat": True,
+                                                               "short_circuit": False}, f"osp status: {f}")
+rc, out, _ = run("decode", "osp", "FF AA 02 14 03 05 00 00 55 77")
+check("charging (0x03)" in out and "5 = low_voltage | overheat" in out, f"osp status text: {out!r}")
+rc, out, _ = run("decode", "osp", "FF AA 02 12 D2 04 00 00 55 77", "--json")
+f = parse_json(out).get("fields", {})
+check(f.get("centivolts") == 1234 and f.get("centivolts_physical") == {"value": 12.34, "unit": "V"}, f"volts: {f}")
+rc, out, _ = run("decode", "osp", "FF AA 02 11 FF FF 00 00 55 77", "--json")
+check(parse_json(out).get("fields", {}).get("soc") == {"value": 100, "unit": "%"}, "soc %")
+nav_json = "55 AA 02 00 00 7B 22 61 22 3A 31 7D 00 00 00 00 00 00 00 00"
+rc, out, _ = run("decode", "navbot", nav_json, "--json")
+check(parse_json(out).get("fields", {}).get("payload_text") == '{"a":1}', f"NAVBOT JSON payload text: {out!r}")
+rc, out, _ = run("decode", "navbot", nav_json)
+check('payload (text)  {"a":1}' in out and "payload         7B 22 61 22 3A 31 7D 00" in out and len(out.splitlines()) == 5,
+      f"NAVBOT JSON payload, text output: {out!r}")
+
+# ---- sign-magnitude NAVBOT frames: 0x8A is -118 to the robot (out of range), -10 in the document's spelling
+rc, out, err = run("decode", "navbot", "55 AA 10 00 00 00 00 8A 00 01 00 00 00 00 00 00 00 00 00 00")
+check(rc == 1 and "value out of range at byte 7: maneuver.pitch" in err and "-100..100" in err and "0x8A = -118" in err
+      and "0x8A = -10" in err, f"sign-magnitude hint: {err!r}")
+rc, out, err = run("decode", "navbot", "55 AA 10 00 00 00 00 B2 00 01 00 00 00 00 00 00 00 00 00 00", "--json")
+doc = parse_json(out)
+check(rc == 0 and doc.get("fields", {}).get("pitch") == -78 and any("0xB2 = -50" in n for n in doc.get("notes", [])),
+      f"sign-magnitude note: {out!r}")
+
+# ---- errors name the field, its valid values and the count
+BAD = [
+    (["decode", "buwizz3", "30 80 00 00 00 00 00 00 00"], 1, ["value out of range at byte 1", "set_motor_data.power[0]", "-127..127"]),
+    (["decode", "buwizz3", "30 00"], 1, ["input too short at byte 2", "set_motor_data is 9 bytes, 2 given"]),
+    (["decode", "buwizz3", "99"], 1, ["unknown message at byte 0"]),
+    (["decode", "buwizz3", "32 0A"], 1, ["value out of range at byte 1", "set_data_period.period_ms", "20..255"]),
+    (["decode", "buwizz3", "37 04"], 1, ["value is not a valid code at byte 1", "set_accel_lpf.setting", "hz_0_781", "hz_100"]),
+    (["decode", "buwizz3", "01" + " 00" * 60], 1, ["status is 54 or 68-129 bytes, 61 given"]),
+    (["decode", "navbot", "55 AA 10 00 00 00 00 00 8A 00 01 00 00 00 00 00 00 00 00 00 00 00"], 1, ["transcription error"]),
+    (["decode", "osp", "FF AA 02 14 01 00 00 00 55 00"], 1, ["bad trailer byte at byte 9"]),
+    (["decode", "osp", "FF AA 03 01 0A 0B 0C 0D 55 77"], 1, ["DEV 03 CMD 01 params 0A 0B 0C 0D"]),
+    (["encode", "buwizz3", "set_motor_data", "power=-128,0,0,0,0,0"], 1, ["value out of range at byte 1", "power[0]=-128", "-127..127"]),
+    (["encode", "buwizz3", "set_motor_data", "power=0,300,0,0,0,0"], 1, ["value out of range at byte 2", "power[1]=300"]),
+    (["encode", "buwizz3", "set_data_period", "period_ms=10"], 1, ["value out of range at byte 1", "period_ms=10", "20..255"]),
+    (["encode", "buwizz3", "set_motor_data", "power=10,20"], 1, ["power: 2 values given, 6 expected"]),
+    (["encode", "buwizz3", "status", "pu_motors=1,2,3"], 1, ["pu_motors: 3 values given, 16 expected", "type, velocity, absolute_position, position"]),
+    (["encode", "navbot", "maneuver", "switch_a=jump"], 1, ["unknown name", "switch_a=jump", "stop, start, start_touch_panel"]),
+    (["encode", "buwizz3", "set_led_status", "blink=1,15,15,0,0,8,5,5"], 1, ["give colors too"]),
+    (["encode", "navbot", "maneuver", "pitch=1", "pitch=2"], 2, ["field pitch given twice"]),
+    (["encode", "osp", "nosuch"], 2, ["unknown message nosuch"]),
+    (["encode", "osp", "soc", "nosuch=1"], 2, ["unknown field nosuch", "soc_raw"]),
+]
+for args, status, texts in BAD:
+    rc, out, err = run(*args)
+    check(rc == status and all(t in err for t in texts) and len(err.strip().splitlines()) == 1 and out == "",
+          f"bad input {args}: {rc} {err!r}")
+rc, out, err = run("decode", "osp", "FF AA 03 01 0A 0B 0C 0D 55 77", "--json")
+check(rc == 1 and parse_json(out).get("type") == "error" and "unknown message" in parse_json(out).get("error", ""), "decode --json error")
+
+# ---- list
 rc, out, _ = run("list")
 check(rc == 0 and all(m in out for m in ["set_pid_parameters", "maneuver", "request_soc", "charger_settings"]), "list")
+check(" 1 bytes" not in out and "read_accel_calibration     23       1 byte\n" in out, "singular byte")
+check("1, 13 or 17 bytes" in out and "54 or 68-129 bytes" in out and "25 bytes" in out, f"exact lengths")
 rc, out, _ = run("list", "buwizz3", "--fields")
 check(rc == 0 and "reference_rate_limit" in out and "@30" in out and "-127..127" in out, "list --fields")
+check("pu_motors=4 x 4 = 16 values in this order: type, velocity, absolute_position, position" in out
+      and "pu_motors[i].position" in out and "@26+8i" in out, "record expanded (pu_motors)")
+check("pid_state=5 values in this order: process_value, error, output, integrator, motor_output" in out
+      and "pid_state.motor_output" in out and "@67" in out, "record expanded (pid_state)")
+check("bit 3-4 battery (empty/low/medium/full)" in out, "flag bits listed")
+rc, out, _ = run("list", "navbot", "--fields")
+check("stop, start, start_touch_panel" in out and "osp" not in out, "list navbot")
+
+# ---- help
 rc, out, _ = run("--help")
-check(rc == 0 and "robowire monitor" in out, "--help")
+check(rc == 0 and "monitor" in out and "Exit status" in out, "--help")
 rc, out, _ = run("decode", "--help")
-check(rc == 0 and "usage" in out, "decode --help")
+check(rc == 0 and "Usage" in out and "--direction" in out, "decode --help")
+rc, out, err = run()
+check(rc == 2 and "Usage" in err, "no arguments")
 
-# scan: frames with noise, from stdin
-stream = bytes.fromhex("00 55 77 FF FF AA 01 02 03 04 05 06 07 08 FF AA 02 11 FF AA 00 00 55 77 FF AA 02 12 D2 04 00 00 55 77")
-rc, out, _ = run("scan", "osp", "-", stdin=stream)
-check(rc == 0 and out.count("osp soc") == 1 and out.count("osp voltage") == 1 and "frames 2," in out, f"scan: {out!r}")
-rc, out, _ = run("scan", "osp", "--json", stdin=stream)
-lines = [json.loads(l) for l in out.splitlines() if l.startswith("{")]
-check([l["message"] for l in lines] == ["soc", "voltage"], "scan --json")
+# ---- scan: frames with noise, binary from stdin; hex text files, detected or forced
+stream = bytes.fromhex("00 55 77 FF FF AA 01 02 03 04 05 06 07 08 FF AA 02 11 FF AA 00 00 55 77 FF AA 02 12 D2 04 00 00 55 77"
+                       " FF AA 03 01 0A 0B 0C 0D 55 77")
+rc, out, err = run("scan", "osp", "-", stdin=stream)
+check(rc == 0 and out.count("osp soc") == 1 and out.count("osp voltage") == 1 and "frames 3," in out
+      and "unknown message" in out and "read as binary" in out, f"scan: {out!r}")
+rc, out, err = run("scan", "osp", "--json", stdin=stream)
+lines = [parse_json(l) for l in out.splitlines()]
+check([l.get("type") for l in lines] == ["message", "message", "error", "counters"], f"scan --json: only JSON lines: {out!r}")
+check([l.get("message") for l in lines[:2]] == ["soc", "voltage"] and lines[2].get("bytes") == "FF AA 03 01 0A 0B 0C 0D 55 77"
+      and lines[3].get("frames") == 3 and lines[3].get("input") == "binary", f"scan --json: {lines}")
+check(lines[1].get("fields", {}).get("centivolts_physical") == {"value": 12.34, "unit": "V"}, "scan --json physical value")
+d = tempfile.mkdtemp()
+text_path = os.path.join(d, "dump.txt")
+with open(text_path, "w") as fh:
+    fh.write("FF AA 02 12 D2 04 00 00 55 77\nFF-AA-02-14-03-05-00-00-55-77\n")
+rc, out, err = run("scan", "osp", text_path)
+check(rc == 0 and "osp voltage" in out and "osp status" in out and "frames 2," in out and "read as hex text" in out
+      and "hex text" in err, f"scan hex text: {out!r} {err!r}")
+rc, out, err = run("scan", "osp", text_path, "--json")
+lines = [parse_json(l) for l in out.splitlines()]
+check([l.get("type") for l in lines] == ["message", "message", "counters"] and lines[-1].get("input") == "hex text", f"{out!r}")
+rc, out, err = run("scan", "osp", "--binary", text_path)
+check(rc == 0 and "frames 0," in out and "read as binary" in out and "--hex" in err, f"scan --binary on text: {out!r} {err!r}")
+rc, out, err = run("scan", "osp", "--hex", "-", stdin=b"FF AA 02 12 D2 04 00 00 55 77")
+check(rc == 0 and "osp voltage" in out, "scan --hex from stdin")
+bin_path = os.path.join(d, "frame.bin")
+with open(bin_path, "wb") as fh:
+    fh.write(bytes.fromhex("FF AA 02 12 D2 04 00 00 55 77"))
+rc, out, err = run("decode", "osp", "--file", bin_path)
+check(rc == 0 and out.startswith("osp voltage") and "as binary" in err, f"decode --file binary: {err!r}")
+one_path = os.path.join(d, "frame.txt")
+with open(one_path, "w") as fh:
+    fh.write("(0x) FF-AA-02-12-D2-04-00-00-55-77\n")
+rc, out, err = run("decode", "osp", f"--file={one_path}", "--json")
+check(rc == 0 and parse_json(out).get("message") == "voltage" and "as hex text" in err, f"decode --file hex text: {err!r}")
+shutil.rmtree(d)
 
-# monitor: a real pseudo-terminal pair from socat, a writer sending frames mixed with noise
-if shutil.which("socat"):
+# ---- monitor: a real pseudo-terminal pair from socat, a writer sending frames mixed with noise
+def monitor(json_mode):
     d = tempfile.mkdtemp()
     a, b = os.path.join(d, "a"), os.path.join(d, "b")
     socat = subprocess.Popen(["socat", f"pty,raw,echo=0,link={a}", f"pty,raw,echo=0,link={b}"],
@@ -179,21 +331,69 @@ if shutil.which("socat"):
         if os.path.exists(a) and os.path.exists(b):
             break
         time.sleep(0.05)
-    mon = subprocess.Popen([TOOL, "monitor", a, "--baud", "115200", "--count", "3", "--timeout", "10"],
+    mon = subprocess.Popen([TOOL, "monitor", a, "--baud=115200", "--count", "4", "--timeout", "10"] + (["--json"] if json_mode else []),
                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
     time.sleep(0.5)
     with open(b, "wb", buffering=0) as w:
         for chunk in [b"\x00\x13\xff", bytes.fromhex("FF AA 02 12 D2 04 00 00 55 77"), b"\xff\xaa\x55\x77noise",
-                      bytes.fromhex("FF AA 02 14 03 05 00 00"), bytes.fromhex("55 77 FF AA 00 11 02 00 00 00 55 77")]:
+                      bytes.fromhex("FF AA 02 14 03 05 00 00"), bytes.fromhex("55 77 FF AA 00 11 02 00 00 00 55 77"),
+                      bytes.fromhex("FF AA 03 01 0A 0B 0C 0D 55 77")]:
             w.write(chunk)
             time.sleep(0.05)
         out, err = mon.communicate(timeout=15)
     socat.terminate()
-    out = out.decode()
-    check(mon.returncode == 0 and "osp voltage" in out and "osp status" in out and "osp device_type" in out
-          and "frames 3," in out, f"monitor over a pty: {out!r} {err!r}")
+    shutil.rmtree(d, ignore_errors=True)
+    return mon.returncode, out.decode(), err.decode()
+
+if shutil.which("socat"):
+    rc, out, err = monitor(False)
+    check(rc == 0 and "osp voltage" in out and "osp status" in out and "osp device_type" in out and "unknown message" in out
+          and "frames 4," in out, f"monitor over a pty: {out!r} {err!r}")
+    rc, out, err = monitor(True)
+    lines = [parse_json(l) for l in out.splitlines()]
+    check(rc == 0 and [l.get("type") for l in lines] == ["message", "message", "message", "error", "counters"]
+          and [l.get("message") for l in lines[:3]] == ["voltage", "status", "device_type"] and lines[-1].get("frames") == 4,
+          f"monitor --json over a pty: {out!r} {err!r}")
 else:
     check(False, "socat is not installed")
+
+# ---- the examples in docs/cli.md and README.md are what the tool prints ("..." stands for the rest)
+import shlex
+root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+
+def examples(lines, indent):
+    found, cur = [], None
+    for line in lines:
+        if line.startswith(indent + "$ robowire "):
+            cur = (line[len(indent) + 2:], [])
+            found.append(cur)
+        elif cur is not None and line.startswith(indent) and line.strip() and not line.startswith("```"):
+            cur[1].append(line[len(indent):])
+        else:
+            cur = None
+    return found
+
+def check_examples(where, found):
+    check(len(found) >= 3, f"{where}: examples found")
+    for cmd, want in found:
+        if not want:
+            continue  # a command shown without output (a device)
+        rc, out, err = run(*shlex.split(cmd)[1:])
+        got = out.splitlines() + err.splitlines()
+        if "..." in [w.strip() for w in want]:
+            n = [w.strip() for w in want].index("...")
+            ok = got[:n] == want[:n]
+        else:
+            ok = got == want
+        check(ok, f"{where}: {cmd}: {got!r} != {want!r}")
+
+with open(os.path.join(root, "docs", "cli.md")) as fh:
+    doc = fh.read()
+check_examples("docs/cli.md", examples(doc.split("## EXAMPLES")[1].split("\n## ")[0].splitlines(), "    "))
+with open(os.path.join(root, "README.md")) as fh:
+    readme = fh.read()
+block = readme.split("The demo ends with the command-line tool")[1].split("```")[1]
+check_examples("README.md", examples(block.splitlines(), ""))
 
 print(f"{passed} passed, {failed} failed")
 sys.exit(1 if failed else 0)

@@ -10,6 +10,7 @@
 
 #include "../core/decode.hpp"
 #include "../core/encode.hpp"
+#include "../core/flag_bits.hpp"
 #include "../core/table.hpp"
 
 namespace robowire::buwizz3 {
@@ -330,6 +331,14 @@ constexpr auto table_of(std::type_identity<check_charger_settings>) {
 constexpr auto table_of(std::type_identity<charger_settings>) {
     using M = charger_settings;
     return make_table<M>("charger_settings", {impl::cmd(0xAC)}, field{"data", &M::data, 1, wire::tail{}});
+}
+
+// Names of the port bits of brake_flags and lut_disable_flags, for printing.
+constexpr auto flag_bits_of(std::type_identity<set_motor_data>) {
+    return join_flag_bits(port_bits("brake_flags"), port_bits("lut_disable_flags"));
+}
+constexpr auto flag_bits_of(std::type_identity<set_motor_data_extended>) {
+    return join_flag_bits(port_bits("brake_flags"), port_bits("lut_disable_flags"));
 }
 
 }  // namespace robowire::buwizz3

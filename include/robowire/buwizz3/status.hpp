@@ -11,6 +11,7 @@
 #include "../core/bits.hpp"
 #include "../core/decode.hpp"
 #include "../core/encode.hpp"
+#include "../core/flag_bits.hpp"
 #include "../core/table.hpp"
 
 namespace robowire::buwizz3 {
@@ -112,6 +113,16 @@ constexpr auto table_of(std::type_identity<status>) {
         field{"pu_motors", &M::pu_motors, 22, wire::record{}}, field{"pid_state", &M::pid_state, 54, wire::record{}});
     t.declared_max_input = 129;
     return t;
+}
+
+// Names of status::flags bits (status_flag), for printing.
+constexpr auto flag_bits_of(std::type_identity<status>) {
+    return std::array<flag_bit, 6>{{{"flags", 0, 1, "error", {}},
+                                    {"flags", 1, 1, "motion_wakeup", {}},
+                                    {"flags", 2, 1, "long_range_phy", {}},
+                                    {"flags", 3, 2, "battery", {"empty", "low", "medium", "full"}},
+                                    {"flags", 5, 1, "charging", {}},
+                                    {"flags", 6, 1, "usb_connected", {}}}};
 }
 
 // Units.

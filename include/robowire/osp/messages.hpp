@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <numbers>
 
+#include "../core/flag_bits.hpp"
 #include "frame.hpp"
 
 namespace robowire::osp {
@@ -142,6 +143,14 @@ constexpr auto table_of(std::type_identity<current>) {
 constexpr auto table_of(std::type_identity<status>) {
     return make_table<status>("status", impl::fixed(0x02, 0x14), field{"state", &status::state, 4, wire::u8{}},
                               field{"flags", &status::flags, 5, wire::u8{}});
+}
+
+// Names of status::flags bits (flag::), for printing.
+constexpr auto flag_bits_of(std::type_identity<status>) {
+    return std::array<flag_bit, 4>{{{"flags", 0, 1, "low_voltage", {}},
+                                    {"flags", 1, 1, "high_voltage", {}},
+                                    {"flags", 2, 1, "overheat", {}},
+                                    {"flags", 3, 1, "short_circuit", {}}}};
 }
 
 // Unit helpers.

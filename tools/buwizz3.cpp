@@ -1,0 +1,76 @@
+// BuWizz3: commands (host -> device) and notifications (device -> host), from
+// buwizz3::command and buwizz3::notification.
+#include "describe.hpp"
+
+namespace robowire::cli {
+namespace {
+namespace bw = robowire::buwizz3;
+
+// The message of variant V whose command byte is `cmd`: its name and accepted lengths.
+template <class V>
+std::optional<std::pair<std::string, std::string>> by_command(std::uint8_t cmd, std::size_t len, bool& length_fits) {
+    std::optional<std::pair<std::string, std::string>> found;
+    for_each_alternative<V>([&](auto t) {
+        using M = typename decltype(t)::type;
+        constexpr auto& tab = robowire::table_v<M>;
+        if (found || tab.fixed[0].value != cmd) return;
+        found.emplace(std::string(tab.name), valid_lengths<M>());
+        length_fits = len >= tab.min_size() && len <= tab.max_input();
+        // lengths inside [min, max] that an optional block makes invalid still count as this direction's
+    });
+    return found;
+}
+
+outcome decode_as(std::span<const std::uint8_t> in, direction d) {
+    if (d == direction::command) {
+        const auto r = bw::decode_command(in);
+        return r ? outcome_of(*r) : failure(exit_bad_input, describe_decode_error<bw::command>(in, r.error()));
+    }
+    const auto r = bw::decode_notification(in);
+    return r ? outcome_of(*r) : failure(exit_bad_input, describe_decode_error<bw::notification>(in, r.error()));
+}
+
+outcome decode(std::span<const std::uint8_t> in, direction d) {
+    if (in.empty()) return decode_as(in, direction::command);
+    bool cmd_fits = false, note_fits = false;
+    const auto c = by_command<bw::command>(in[0], in.size(), cmd_fits);
+    const auto n = by_command<bw::notification>(in[0], in.size(), note_fits);
+    if (d != direction::any) {
+        outcome o = decode_as(in, d);
+        if (d == direction::command && !c && n) o.error += " (" + hex2(in[0]) + " is the notification " + n->first + ")";
+        if (d == direction::notification && !n && c) o.error += " (" + hex2(in[0]) + " is the command " + c->first + ")";
+        return o;
+    }
+    if (c && !n) return decode_as(in, direction::command);
+    if (n && !c) return decode_as(in, direction::notification);
+    if (!c && !n) {
+        return failure(exit_bad_input, "unknown message at byte 0: " + hex2(in[0]) +
+                                           " is no BuWizz3 command or notification (robowire list buwizz3)");
+    }
+    // both directions use this command byte: the length decides
+    if (cmd_fits && !note_fits) return decode_as(in, direction::command);
+    if (note_fits && !cmd_fits) return decode_as(in, direction::notification);
+    const std::string which = hex2(in[0]) + " is the command " + c->first + " (" + c->second + ") and the notification " +
+                              n->first + " (" + n->second + "); " + plural(in.size(), "byte", "bytes") + " given";
+    if (cmd_fits && note_fits) return failure(exit_usage, which + ": add --direction command or --direction notification");
+    outcome o = decode_as(in, direction::command);
+    o.error += " (" + which + ")";
+    return o;
+}
+
+std::string list(bool fields) {
+    std::string out = "buwizz3 (BLE; byte 0 = command)\n commands (host -> device):\n";
+    list_variant<bw::command>(out, fields);
+    out += " notifications (device -> host):\n";
+    list_variant<bw::notification>(out, fields);
+    return out;
+}
+
+}  // namespace
+
+const protocol& buwizz3_protocol() {
+    static const protocol p{"buwizz3", "BLE; byte 0 = command", true, list, decode, buwizz3_encode};
+    return p;
+}
+
+}  // namespace robowire::cli

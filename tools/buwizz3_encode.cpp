@@ -1,0 +1,13 @@
+// BuWizz3 encode (its own translation unit: the 23 messages' encoders compile in parallel with the decoders).
+#include "describe.hpp"
+
+namespace robowire::cli {
+
+outcome buwizz3_encode(std::string_view message, const std::vector<std::pair<std::string, std::string>>& values) {
+    namespace bw = robowire::buwizz3;
+    if (auto o = encode_in<bw::command>(message, values)) return *o;
+    if (auto o = encode_in<bw::notification>(message, values)) return *o;
+    return failure(exit_usage, "unknown message " + std::string(message) + " (robowire list buwizz3)");
+}
+
+}  // namespace robowire::cli

@@ -1,0 +1,613 @@
+// Templates over the library's tables: a message as a node tree, its `list`
+// entry, the field at a byte offset, and encoding from name=value pairs.
+// Included by the protocol modules only (buwizz3.cpp, navbot.cpp, osp.cpp).
+#pragma once
+
+#include <robowire/core/flag_bits.hpp>
+#include <robowire/robowire.hpp>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <type_traits>
+#include <variant>
+
+#include "cli.hpp"
+
+namespace robowire::cli {
+
+// ---------------------------------------------------------------- small helpers
+inline std::string number(double v) {
+    char b[48];
+    std::snprintf(b, sizeof b, "%.6g", v);
+    return b;
+}
+inline std::string hex2(unsigned v) {
+    char b[8];
+    std::snprintf(b, sizeof b, "0x%02X", v & 0xFFu);
+    return b;
+}
+// Rounded to 15 significant digits (13.000000000000002 -> 13).
+inline double tidy(double v) {
+    char b[48];
+    std::snprintf(b, sizeof b, "%.15g", v);
+    return std::strtod(b, nullptr);
+}
+inline std::string plural(std::size_t n, std::string_view one, std::string_view many) {
+    return std::to_string(n) + " " + std::string(n == 1 ? one : many);
+}
+inline std::string unit_text(const robowire::unit& u) {
+    if (u.name.empty()) return {};
+    std::string s;
+    if (u.scale != 1.0 || u.offset != 0.0) {
+        s = "raw x " + number(u.scale);
+        if (u.offset != 0.0) s += " + " + number(u.offset);
+        s += " ";
+    }
+    return s + std::string(u.name);
+}
+
+template <class V, class Fn>
+void for_each_alternative(Fn&& fn) {
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        (fn(std::type_identity<std::variant_alternative_t<I, V>>{}), ...);
+    }(std::make_index_sequence<std::variant_size_v<V>>{});
+}
+
+template <class F>
+using element_of_t = typename F::element_type;
+
+// Values a field's element takes: "20..255 ms", "one of a, b", "a number", ...
+template <class F>
+std::string valid_of(const F& f) {
+    using E = element_of_t<F>;
+    if constexpr (std::is_enum_v<E>) {
+        std::string s = "one of ";
+        bool first = true;
+        for (const auto& e : robowire::enum_table_v<E>) {
+            if (!first) s += ", ";
+            s.append(e.name);
+            first = false;
+        }
+        return s;
+    } else if constexpr (std::is_same_v<E, bool>) {
+        return "true or false";
+    } else if constexpr (F::kind == wire_kind::f32le) {
+        return "a number";
+    } else if constexpr (F::kind == wire_kind::text) {
+        return "text of up to " + plural(E::capacity(), "byte", "bytes");
+    } else if constexpr (F::kind == wire_kind::tail) {
+        return "hex bytes, up to " + std::to_string(E::capacity());
+    } else if constexpr (F::kind == wire_kind::record) {
+        return "a record";
+    } else {
+        std::string s = std::to_string(f.valid.min) + ".." + std::to_string(f.valid.max);
+        if (!f.unit.name.empty()) s += " (" + unit_text(f.unit) + ")";
+        return s;
+    }
+}
+
+// Values one field takes in encode's flattened list (records: all their fields, arrays: every element).
+template <class M>
+constexpr std::size_t flat_count();
+template <class F>
+constexpr std::size_t flat_count_of() {
+    if constexpr (F::kind == wire_kind::record) return F::count * flat_count<element_of_t<F>>();
+    else if constexpr (F::kind == wire_kind::text || F::kind == wire_kind::tail) return 1;
+    else return F::count;
+}
+template <class M>
+constexpr std::size_t flat_count() {
+    std::size_t n = 0;
+    robowire::for_each_field<M>([&](const auto& f) { n += flat_count_of<std::remove_cvref_t<decltype(f)>>(); });
+    return n;
+}
+// "type, velocity, absolute_position, position"
+template <class M>
+std::string flat_names(const std::string& prefix = {}) {
+    std::string s;
+    robowire::for_each_field<M>([&](const auto& f) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        if (!s.empty()) s += ", ";
+        const std::string name = prefix + std::string(f.name) + (F::is_array ? "[" + std::to_string(F::count) + "]" : "");
+        if constexpr (F::kind == wire_kind::record) s += name + " (" + flat_names<element_of_t<F>>() + ")";
+        else s += name;
+    });
+    return s;
+}
+
+// ---------------------------------------------------------------- lengths
+// Every input length M's decoder accepts: "1, 13 or 17 bytes", "54 or 68-129 bytes".
+template <class M>
+std::string valid_lengths() {
+    constexpr auto& t = robowire::table_v<M>;
+    std::vector<std::pair<std::size_t, std::size_t>> runs;
+    for (std::size_t len = t.min_size(); len <= t.max_input(); ++len) {
+        bool ok = true;
+        robowire::for_each_field<M>([&](const auto& f) {
+            using F = std::remove_cvref_t<decltype(f)>;
+            if (F::is_optional && len > f.offset && len < f.end()) ok = false;
+        });
+        if (!ok) continue;
+        if (!runs.empty() && runs.back().second + 1 == len) runs.back().second = len;
+        else runs.emplace_back(len, len);
+    }
+    std::string s;
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        if (i) s += i + 1 == runs.size() ? " or " : ", ";
+        s += std::to_string(runs[i].first);
+        if (runs[i].second != runs[i].first) s += "-" + std::to_string(runs[i].second);
+    }
+    const bool one = runs.size() == 1 && runs[0].first == runs[0].second && runs[0].first == 1;
+    return s + (one ? " byte" : " bytes");
+}
+
+// ---------------------------------------------------------------- the field at a byte
+struct location {
+    std::string path;   // "pu_motors[1].position"
+    std::string valid;  // "-180..179 (deg)"
+};
+template <class M>
+std::optional<location> locate(std::size_t offset) {
+    std::optional<location> found;
+    robowire::for_each_field<M>([&](const auto& f) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        if (found || offset < f.offset) return;
+        if (F::kind != wire_kind::tail && offset >= f.end()) return;
+        std::string path(f.name);
+        std::size_t inner = offset - f.offset;
+        if constexpr (F::is_array) {
+            path += "[" + std::to_string(inner / F::element_size) + "]";
+            inner %= F::element_size;
+        }
+        if constexpr (F::kind == wire_kind::record) {
+            if (auto sub = locate<element_of_t<F>>(inner)) found = location{path + "." + sub->path, sub->valid};
+            else found = location{path, {}};
+        } else {
+            found = location{path, valid_of(f)};
+        }
+    });
+    return found;
+}
+// "value out of range at byte 1: set_data_period.period_ms (valid 20..255 (ms))"
+template <class M>
+std::string describe_error(const robowire::error& e, std::string_view got = {}) {
+    std::string s(robowire::to_string(e.code));
+    s += " at byte " + std::to_string(e.offset);
+    const auto loc = locate<M>(e.offset);
+    if (loc && e.code == errc::missing_field) {
+        s += ": give " + loc->path.substr(0, loc->path.find_first_of("[.")) + " too";
+    } else if (loc) {
+        s += ": " + std::string(robowire::table_v<M>.name) + "." + loc->path;
+        if (!got.empty()) s += " = " + std::string(got);
+        if (!loc->valid.empty()) s += ", valid " + loc->valid;
+    } else if (!got.empty()) {
+        s += " (" + std::string(got) + ")";
+    }
+    return s;
+}
+// Does `in` carry M's fixed bytes (as far as it goes)?
+template <class M>
+bool carries_fixed_bytes(std::span<const std::uint8_t> in) {
+    for (const auto& b : robowire::table_v<M>.fixed)
+        if (b.offset < in.size() && in[b.offset] != b.value) return false;
+    return !robowire::table_v<M>.fixed.empty();
+}
+// A decode error of variant V, naming the message and field when the bytes say which.
+// Length errors name the message's valid lengths instead of a field.
+template <class V>
+std::string describe_decode_error(std::span<const std::uint8_t> in, const robowire::error& e) {
+    std::string s;
+    const bool length = e.code == errc::too_short || e.code == errc::too_long || e.code == errc::bad_length;
+    for_each_alternative<V>([&](auto t) {
+        using M = typename decltype(t)::type;
+        if (!s.empty() || !carries_fixed_bytes<M>(in)) return;
+        if (length)
+            s = std::string(robowire::to_string(e.code)) + " at byte " + std::to_string(e.offset) + ": " +
+                std::string(robowire::table_v<M>.name) + " is " + valid_lengths<M>() + ", " +
+                std::to_string(in.size()) + " given";
+        else
+            s = describe_error<M>(e, e.offset < in.size() ? hex2(in[e.offset]) : std::string{});
+    });
+    if (s.empty()) s = std::string(robowire::to_string(e.code)) + " at byte " + std::to_string(e.offset);
+    return s;
+}
+
+// ---------------------------------------------------------------- a message as a node tree
+template <class M>
+node tree_of(const M& m);
+
+template <class M, class F, class E>
+node element_node(const F& f, const E& v) {
+    node n;
+    if constexpr (F::kind == wire_kind::record) {
+        n = tree_of(v);
+    } else if constexpr (std::is_same_v<E, bool>) {
+        n.kind = node::boolean;
+        n.b = v;
+        n.text = v ? "true" : "false";
+    } else if constexpr (std::is_enum_v<E>) {
+        n.kind = node::string;
+        n.s = std::string(robowire::enum_name(v));
+        n.text = n.s + " (" + hex2(static_cast<unsigned>(v)) + ")";
+    } else if constexpr (std::is_same_v<E, float>) {
+        if (std::isfinite(v)) {
+            n.kind = node::real;
+            n.d = static_cast<double>(v);
+        }
+        n.text = number(static_cast<double>(v));
+    } else if constexpr (std::is_integral_v<E>) {
+        n.kind = node::integer;
+        n.i = static_cast<std::int64_t>(v);
+        n.text = std::to_string(n.i);
+        if (!f.unit.name.empty()) {
+            n.phys = tidy(static_cast<double>(n.i) * f.unit.scale + f.unit.offset);
+            n.unit = std::string(f.unit.name);
+            if (f.unit.scale != 1.0 || f.unit.offset != 0.0) n.text += " (" + number(*n.phys) + " " + n.unit + ")";
+            else n.text += " " + n.unit;
+        }
+        if constexpr (robowire::has_flag_bits<M>) {
+            std::string names;
+            const auto raw = static_cast<unsigned>(n.i);
+            unsigned known = 0;
+            for (const auto& b : robowire::flag_bits_v<M>) {
+                if (b.field != f.name) continue;
+                const unsigned mask = ((1u << b.width) - 1u) << b.lo;
+                known |= mask;
+                const unsigned value = (raw & mask) >> b.lo;
+                std::string shown;
+                if (b.width == 1) {
+                    n.bits.emplace_back(std::string(b.name), value ? "true" : "false");
+                    if (value) shown = std::string(b.name);
+                } else {
+                    const std::string vn = value < b.values.size() && !b.values[value].empty() ? std::string(b.values[value])
+                                                                                              : std::to_string(value);
+                    n.bits.emplace_back(std::string(b.name), vn);
+                    shown = std::string(b.name) + " " + vn;
+                }
+                if (!shown.empty()) names += (names.empty() ? "" : " | ") + shown;
+            }
+            if (!n.bits.empty()) {
+                for (unsigned bit = 0; bit < 8; ++bit)
+                    if ((raw & ~known) & (1u << bit)) names += (names.empty() ? "bit" : " | bit") + std::to_string(bit);
+                n.text += " = " + (names.empty() ? std::string("(none)") : names);
+            }
+        }
+    } else if constexpr (requires { v.view(); }) {
+        n.kind = node::string;
+        n.s = std::string(v.view());
+        n.text = "\"" + n.s + "\"";
+    } else {
+        n.kind = node::string;
+        n.s = hex_of(v.span());
+        n.text = v.empty() ? "(none)" : n.s;
+    }
+    return n;
+}
+
+template <class M>
+node tree_of(const M& m) {
+    node obj;
+    obj.kind = node::object;
+    robowire::for_each_field<M>([&](const auto& f) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        using E = element_of_t<F>;
+        const auto& member = m.*(f.member);
+        auto value_node = [&](const auto& value) {
+            if constexpr (F::is_array) {
+                node arr;
+                arr.kind = node::array;
+                for (const auto& e : value) arr.children.push_back(element_node<M>(f, e));
+                // long byte arrays without meaning per byte (a payload): one hex line in text output
+                if constexpr (F::kind == wire_kind::u8 && std::is_same_v<E, std::uint8_t> && F::count >= 8) {
+                    if (f.unit.name.empty()) arr.text = hex_of(std::span<const std::uint8_t>(value.data(), value.size()));
+                }
+                return arr;
+            } else {
+                return element_node<M>(f, value);
+            }
+        };
+        node n;
+        if constexpr (F::is_optional) {
+            if (member) n = value_node(*member);
+        } else {
+            n = value_node(member);
+        }
+        n.key = std::string(f.name);
+        obj.children.push_back(std::move(n));
+    });
+    return obj;
+}
+
+// ---------------------------------------------------------------- list
+template <class M>
+std::string key_bytes() {
+    std::string s;
+    for (const auto& b : robowire::table_v<M>.fixed) {
+        if (b.code != errc::bad_command && b.code != errc::bad_device) continue;
+        if (!s.empty()) s += ' ';
+        s += hex_of(std::span<const std::uint8_t>(&b.value, 1));
+    }
+    return s;
+}
+template <class M>
+void list_fields(std::string& out, std::size_t base, std::size_t stride_note_base, const std::string& prefix, std::string_view indent) {
+    robowire::for_each_field<M>([&](const auto& f) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        std::string type(robowire::to_string(F::kind));
+        if constexpr (F::kind == wire_kind::bits) {
+            type += "[" + std::to_string(F::wire_type::lo) + ".." + std::to_string(F::wire_type::lo + F::wire_type::width - 1) + "]";
+        }
+        if (F::is_enum) type += " enum";
+        if (F::is_array) type += " x" + std::to_string(F::count);
+        if (F::is_optional) type += " optional";
+        std::string at = "@" + std::to_string(base + f.offset);
+        if (stride_note_base) at += "+" + std::to_string(stride_note_base) + "i";
+        std::string name = prefix + std::string(f.name) + (F::is_array ? "[i]" : "");
+        char line[256];
+        if constexpr (F::kind == wire_kind::record) {
+            using R = element_of_t<F>;
+            const std::string what = F::is_array ? std::to_string(F::count) + " x " + std::to_string(flat_count<R>()) + " = " +
+                                                       plural(flat_count_of<F>(), "value", "values")
+                                                 : plural(flat_count_of<F>(), "value", "values");
+            std::snprintf(line, sizeof line, "%.*s%-28s %-9s %-22s encode: %s=%s in this order: %s\n", static_cast<int>(indent.size()),
+                          indent.data(), name.c_str(), at.c_str(), type.c_str(), std::string(f.name).c_str(), what.c_str(),
+                          flat_names<R>().c_str());
+            out += line;
+            list_fields<R>(out, base + f.offset, F::is_array ? F::element_size : 0, name + ".", std::string(indent) + "  ");
+        } else {
+            std::string valid = valid_of(f);
+            if constexpr (robowire::has_flag_bits<M>) {
+                std::string bits;
+                for (const auto& b : robowire::flag_bits_v<M>) {
+                    if (b.field != f.name) continue;
+                    if (!bits.empty()) bits += ", ";
+                    bits += "bit " + std::to_string(b.lo);
+                    if (b.width > 1) bits += "-" + std::to_string(b.lo + b.width - 1);
+                    bits += " " + std::string(b.name);
+                    if (b.width > 1) {
+                        std::string vals;
+                        for (std::size_t v = 0; v < b.values.size() && v < (1u << b.width); ++v)
+                            vals += (vals.empty() ? "" : "/") + std::string(b.values[v]);
+                        bits += " (" + vals + ")";
+                    }
+                }
+                if (!bits.empty()) valid += "; bits: " + bits;
+            }
+            std::snprintf(line, sizeof line, "%.*s%-28s %-9s %-22s %s\n", static_cast<int>(indent.size()), indent.data(),
+                          name.c_str(), at.c_str(), type.c_str(), valid.c_str());
+            out += line;
+        }
+    });
+}
+template <class M>
+void list_message(std::string& out, bool fields) {
+    constexpr auto& t = robowire::table_v<M>;
+    char line[160];
+    std::snprintf(line, sizeof line, "  %-26.*s %-8s %s\n", static_cast<int>(t.name.size()), t.name.data(), key_bytes<M>().c_str(),
+                  valid_lengths<M>().c_str());
+    out += line;
+    if (fields) list_fields<M>(out, 0, 0, "", "      ");
+}
+template <class V>
+void list_variant(std::string& out, bool fields) {
+    for_each_alternative<V>([&](auto t) { list_message<typename decltype(t)::type>(out, fields); });
+}
+
+// ---------------------------------------------------------------- encode
+inline std::vector<std::string> split_commas(const std::string& s) {
+    std::vector<std::string> out;
+    std::size_t start = 0;
+    for (;;) {
+        const std::size_t c = s.find(',', start);
+        out.push_back(s.substr(start, c == std::string::npos ? std::string::npos : c - start));
+        if (c == std::string::npos) return out;
+        start = c + 1;
+    }
+}
+
+struct value_reader {
+    std::vector<std::string> tokens;
+    std::size_t pos = 0;
+    std::string error;
+};
+
+inline std::optional<std::int64_t> parse_integer(const std::string& t) {
+    std::size_t i = 0;
+    bool neg = false;
+    if (i < t.size() && (t[i] == '-' || t[i] == '+')) neg = t[i++] == '-';
+    int base = 10;
+    if (t.size() - i > 2 && t[i] == '0' && (t[i + 1] == 'x' || t[i + 1] == 'X')) {
+        base = 16;
+        i += 2;
+    }
+    if (i >= t.size()) return std::nullopt;
+    errno = 0;
+    char* end = nullptr;
+    const unsigned long long u = std::strtoull(t.c_str() + i, &end, base);
+    if (*end || errno || t[i] == '-' || t[i] == '+' || u > static_cast<unsigned long long>(std::numeric_limits<std::int64_t>::max()))
+        return std::nullopt;
+    const auto v = static_cast<std::int64_t>(u);
+    return neg ? -v : v;
+}
+
+template <class M>
+bool fill(M& m, value_reader& r, std::size_t base, const std::string& prefix);
+
+template <class F, class E>
+bool parse_element(const F& f, E& v, value_reader& r, std::size_t byte, const std::string& path) {
+    if constexpr (F::kind == wire_kind::record) {
+        return fill(v, r, byte, path + ".");
+    } else {
+        const std::string& t = r.tokens[r.pos++];
+        auto bad = [&](std::string_view why) {
+            r.error = std::string(why) + " at byte " + std::to_string(byte) + ": " + path + "=" + t + ", valid " + valid_of(f);
+            return false;
+        };
+        if constexpr (std::is_same_v<E, bool>) {
+            if (t == "true" || t == "1") v = true;
+            else if (t == "false" || t == "0") v = false;
+            else return bad("not true or false");
+        } else if constexpr (std::is_enum_v<E>) {
+            if (const auto e = robowire::enum_from_name<E>(t)) {
+                v = *e;
+            } else {
+                const auto n = parse_integer(t);
+                if (!n || *n < 0 || *n > 255 || !robowire::is_valid_enum(static_cast<E>(*n))) return bad("unknown name");
+                v = static_cast<E>(*n);
+            }
+        } else if constexpr (std::is_same_v<E, float>) {
+            char* end = nullptr;
+            const float x = std::strtof(t.c_str(), &end);
+            if (t.empty() || *end || !std::isfinite(x)) return bad("not a number");
+            v = x;
+        } else if constexpr (std::is_integral_v<E>) {
+            const auto n = parse_integer(t);
+            if (!n) return bad("not an integer");
+            if (*n < f.valid.min || *n > f.valid.max) return bad(robowire::to_string(errc::value_out_of_range));
+            v = static_cast<E>(*n);
+        } else if constexpr (requires { v.view(); }) {
+            const auto s = E::make(t);
+            if (!s) return bad("text too long");
+            v = *s;
+        } else {
+            std::string err;
+            const auto b = parse_hex_text(t, err);
+            if (!b) return bad(err);
+            const auto x = E::from(*b);
+            if (!x) return bad("too many bytes");
+            v = *x;
+        }
+        return true;
+    }
+}
+
+template <class F, class T>
+bool fill_field(const F& f, T& value, value_reader& r, std::size_t base, const std::string& path) {
+    if constexpr (F::is_array) {
+        for (std::size_t k = 0; k < F::count; ++k)
+            if (!parse_element(f, value[k], r, base + f.offset + k * F::element_size, path + "[" + std::to_string(k) + "]"))
+                return false;
+        return true;
+    } else {
+        return parse_element(f, value, r, base + f.offset, path);
+    }
+}
+
+template <class M>
+bool fill(M& m, value_reader& r, std::size_t base, const std::string& prefix) {
+    bool ok = true;
+    robowire::for_each_field<M>([&](const auto& f) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        if (!ok) return;
+        auto& member = m.*(f.member);
+        if constexpr (F::is_optional) ok = fill_field(f, member.emplace(), r, base, prefix + std::string(f.name));
+        else ok = fill_field(f, member, r, base, prefix + std::string(f.name));
+    });
+    return ok;
+}
+
+// Builds M from name=value pairs (names already checked against M's fields, no repeats).
+template <class M>
+outcome encode_as(const std::vector<std::pair<std::string, std::string>>& values) {
+    outcome o;
+    M m{};
+    const std::string mname(robowire::table_v<M>.name);
+    // names first: unknown and repeated names are usage errors
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        bool known = false;
+        robowire::for_each_field<M>([&](const auto& f) { known = known || f.name == values[i].first; });
+        if (!known) {
+            std::string names;
+            robowire::for_each_field<M>([&](const auto& f) { names += (names.empty() ? "" : ", ") + std::string(f.name); });
+            o.status = exit_usage;
+            o.error = "unknown field " + values[i].first + " of " + mname + " (fields: " + (names.empty() ? "none" : names) + ")";
+            return o;
+        }
+        for (std::size_t j = 0; j < i; ++j) {
+            if (values[j].first == values[i].first) {
+                o.status = exit_usage;
+                o.error = "field " + values[i].first + " given twice (" + values[j].first + "=" + values[j].second + ", " +
+                          values[i].first + "=" + values[i].second + ")";
+                return o;
+            }
+        }
+    }
+    robowire::for_each_field<M>([&](const auto& f) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        if (o.status) return;
+        const std::pair<std::string, std::string>* given = nullptr;
+        for (const auto& v : values)
+            if (v.first == f.name) given = &v;
+        if (!given) return;
+        value_reader r;
+        if constexpr (F::kind == wire_kind::text || F::kind == wire_kind::tail) r.tokens = {given->second};
+        else r.tokens = split_commas(given->second);
+        constexpr std::size_t want = flat_count_of<F>();
+        if (r.tokens.size() != want) {
+            o.status = exit_bad_input;
+            o.error = std::string(f.name) + ": " + plural(r.tokens.size(), "value", "values") + " given, " + std::to_string(want) +
+                      " expected";
+            if constexpr (F::kind == wire_kind::record)
+                o.error += " (" + (F::is_array ? std::to_string(F::count) + " x " : std::string()) + "[" +
+                           flat_names<element_of_t<F>>() + "])";
+            else if (F::is_array)
+                o.error += " (" + std::string(f.name) + "=v1,...,v" + std::to_string(want) + ")";
+            return;
+        }
+        auto& member = m.*(f.member);
+        bool ok;
+        if constexpr (F::is_optional) ok = fill_field(f, member.emplace(), r, 0, std::string(f.name));
+        else ok = fill_field(f, member, r, 0, std::string(f.name));
+        if (!ok) {
+            o.status = exit_bad_input;
+            o.error = r.error;
+        }
+    });
+    if (o.status) return o;
+    const auto w = robowire::encode(m);
+    if (!w) {
+        o.status = exit_bad_input;
+        o.error = describe_error<M>(w.error());
+        return o;
+    }
+    o.message = mname;
+    o.bytes.assign(w->begin(), w->end());
+    return o;
+}
+
+// Encodes message `name` if it is one of V's alternatives.
+template <class V>
+std::optional<outcome> encode_in(std::string_view name, const std::vector<std::pair<std::string, std::string>>& values) {
+    std::optional<outcome> o;
+    for_each_alternative<V>([&](auto t) {
+        using M = typename decltype(t)::type;
+        if (!o && robowire::table_v<M>.name == name) o = encode_as<M>(values);
+    });
+    return o;
+}
+
+// A decoded variant as an outcome.
+template <class V>
+outcome outcome_of(const V& v) {
+    outcome o;
+    std::visit(
+        [&](const auto& m) {
+            using M = std::remove_cvref_t<decltype(m)>;
+            o.message = std::string(robowire::table_v<M>.name);
+            o.fields = tree_of(m);
+        },
+        v);
+    return o;
+}
+
+inline outcome failure(int status, std::string error) {
+    outcome o;
+    o.status = status;
+    o.error = std::move(error);
+    return o;
+}
+
+}  // namespace robowire::cli

@@ -1,0 +1,90 @@
+// Hex text as users paste it, and hex/binary detection.
+#include <cstdio>
+
+#include "cli.hpp"
+
+namespace robowire::cli {
+namespace {
+bool is_separator(char c) {
+    switch (c) {
+    case ' ': case '\t': case '\n': case '\r': case '\f': case '\v':
+    case '-': case ':': case ',': case ';': case '{': case '}': case '[': case ']':
+        return true;
+    default:
+        return false;
+    }
+}
+int digit(char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+}
+bool starts_with_0x_marker(std::string_view s) {  // nRF Connect's "(0x)"
+    return s.size() >= 4 && s[0] == '(' && s[1] == '0' && (s[2] == 'x' || s[2] == 'X') && s[3] == ')';
+}
+std::string shown(char c) {
+    char b[16];
+    if (static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7F) std::snprintf(b, sizeof b, "'%c'", c);
+    else std::snprintf(b, sizeof b, "byte 0x%02X", static_cast<unsigned>(static_cast<unsigned char>(c)));
+    return b;
+}
+}  // namespace
+
+std::optional<byte_vector> parse_hex_text(std::string_view text, std::string& error) {
+    byte_vector out;
+    std::size_t i = 0;
+    while (i < text.size()) {
+        if (is_separator(text[i])) { ++i; continue; }
+        if (starts_with_0x_marker(text.substr(i))) { i += 4; continue; }
+        const std::size_t start = i;
+        std::size_t end = i;
+        while (end < text.size() && !is_separator(text[end])) ++end;
+        std::size_t d = start;
+        if (end - start >= 2 && text[start] == '0' && (text[start + 1] == 'x' || text[start + 1] == 'X')) d += 2;
+        for (std::size_t k = d; k < end; ++k) {
+            if (digit(text[k]) < 0) {
+                error = "bad hex: " + shown(text[k]) + " at character " + std::to_string(k) + " is not a hex digit";
+                return std::nullopt;
+            }
+        }
+        const std::size_t digits = end - d;
+        if (digits == 0 || digits % 2 != 0) {
+            error = "bad hex: odd number of hex digits in \"" + std::string(text.substr(start, end - start)) +
+                    "\" at character " + std::to_string(start) + " (each byte is two digits)";
+            return std::nullopt;
+        }
+        for (std::size_t k = d; k < end; k += 2)
+            out.push_back(static_cast<std::uint8_t>(digit(text[k]) << 4 | digit(text[k + 1])));
+        i = end;
+    }
+    if (out.empty()) {
+        error = "bad hex: no hex bytes given";
+        return std::nullopt;
+    }
+    return out;
+}
+
+bool looks_like_hex_text(std::span<const std::uint8_t> data) {
+    bool any_digit = false;
+    for (const std::uint8_t b : data) {
+        const char c = static_cast<char>(b);
+        if (digit(c) >= 0) any_digit = true;
+        else if (!is_separator(c) && c != 'x' && c != 'X' && c != '(' && c != ')') return false;
+    }
+    return any_digit;
+}
+
+std::string hex_of(std::span<const std::uint8_t> bytes) {
+    static constexpr char digits[] = "0123456789ABCDEF";
+    std::string s;
+    s.reserve(bytes.size() * 3);
+    for (const std::uint8_t b : bytes) {
+        if (!s.empty()) s += ' ';
+        s += digits[b >> 4];
+        s += digits[b & 15];
+    }
+    return s;
+}
+
+}  // namespace robowire::cli

@@ -1,0 +1,366 @@
+// robowire: decode, encode and describe BuWizz3, NAVBOT-ES02 and OSP frames
+// from the library's field tables; scan an OSP byte stream; watch a serial port.
+// Commands and options: CLI11. Output: render.cpp (text or JSON lines).
+#include <CLI/CLI.hpp>
+#include <robowire/osp/scanner.hpp>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+
+#include "cli.hpp"
+
+namespace robowire::cli {
+
+std::span<const protocol* const> protocols() {
+    static const protocol* const all[] = {&buwizz3_protocol(), &navbot_protocol(), &osp_protocol()};
+    return all;
+}
+const protocol* find_protocol(std::string_view name) {
+    for (const protocol* p : protocols())
+        if (p->name == name) return p;
+    return nullptr;
+}
+
+namespace {
+
+// Accepts a value that does not start with '-' (the option's type then checks it is a number).
+const CLI::Validator not_negative(
+    [](std::string& v) { return !v.empty() && v[0] == '-' ? std::string("must not be negative: ") + v : std::string(); }, "NOT NEGATIVE",
+    "not_negative");
+
+void out_line(const std::string& s) {
+    std::fwrite(s.data(), 1, s.size(), stdout);
+    std::fputc('\n', stdout);
+    std::fflush(stdout);
+}
+void err_line(const std::string& s) { std::fprintf(stderr, "%s\n", s.c_str()); }
+
+int report(const protocol& p, const outcome& o, bool json) {
+    if (o.status != exit_ok) {
+        if (json) out_line(render_json_error(o.error, {{"protocol", std::string(p.name)}}));
+        err_line("error: " + o.error);
+        for (const auto& h : o.hints) err_line("hint: " + h);
+        return o.status;
+    }
+    if (json) out_line(render_json(p.name, o));
+    else std::fputs(render_text(p.name, o).c_str(), stdout);
+    return exit_ok;
+}
+
+// ---- input files: binary or hex text
+struct input {
+    byte_vector bytes;
+    bool hex_text = false;
+};
+enum class input_mode { detect, hex, binary };
+
+// Reads all of `path` ("-": stdin). Exit status on failure.
+int read_all(const std::string& path, byte_vector& out) {
+    FILE* f = path == "-" ? stdin : std::fopen(path.c_str(), "rb");
+    if (!f) {
+        err_line("error: cannot open " + path + ": " + std::strerror(errno));
+        return exit_bad_input;
+    }
+    std::uint8_t buf[4096];
+    std::size_t n = 0;
+    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) out.insert(out.end(), buf, buf + n);
+    if (f != stdin) std::fclose(f);
+    return exit_ok;
+}
+int read_input(const std::string& path, input_mode mode, input& in) {
+    byte_vector raw;
+    if (const int rc = read_all(path, raw)) return rc;
+    in.hex_text = mode == input_mode::hex || (mode == input_mode::detect && looks_like_hex_text(raw));
+    if (!in.hex_text) {
+        in.bytes = std::move(raw);
+        return exit_ok;
+    }
+    std::string error;
+    const auto b = parse_hex_text(std::string_view(reinterpret_cast<const char*>(raw.data()), raw.size()), error);
+    if (!b) {
+        err_line("error: " + path + ": " + error);
+        return exit_bad_input;
+    }
+    in.bytes = *b;
+    return exit_ok;
+}
+const char* input_kind(bool hex_text) { return hex_text ? "hex text" : "binary"; }
+
+// ---- decode
+struct decode_options {
+    std::string protocol;
+    std::vector<std::string> hex;
+    std::string file;
+    std::string direction;
+    bool json = false, hex_file = false, binary_file = false;
+};
+int run_decode(const decode_options& opt) {
+    const protocol& p = *find_protocol(opt.protocol);
+    byte_vector bytes;
+    if (!opt.file.empty()) {
+        if (!opt.hex.empty()) {
+            err_line("error: give hex bytes or --file, not both");
+            return exit_usage;
+        }
+        input in;
+        const auto mode = opt.hex_file ? input_mode::hex : opt.binary_file ? input_mode::binary : input_mode::detect;
+        if (const int rc = read_input(opt.file, mode, in)) return rc;
+        err_line("read " + opt.file + " as " + input_kind(in.hex_text) + " (" + std::to_string(in.bytes.size()) +
+                 (in.bytes.size() == 1 ? " byte)" : " bytes)"));
+        bytes = std::move(in.bytes);
+    } else {
+        if (opt.hex.empty()) {
+            err_line("error: decode needs hex bytes or --file (robowire decode --help)");
+            return exit_usage;
+        }
+        std::string joined;
+        for (const auto& a : opt.hex) joined += (joined.empty() ? "" : " ") + a;
+        std::string error;
+        const auto b = parse_hex_text(joined, error);
+        if (!b) {
+            if (opt.json) out_line(render_json_error(error, {}));
+            err_line("error: " + error);
+            return exit_bad_input;
+        }
+        bytes = *b;
+    }
+    if (!opt.direction.empty() && !p.has_directions) {
+        err_line("error: --direction applies to buwizz3 only");
+        return exit_usage;
+    }
+    const direction d = opt.direction == "command"        ? direction::command
+                        : opt.direction == "notification" ? direction::notification
+                                                          : direction::any;
+    return report(p, p.decode(bytes, d), opt.json);
+}
+
+// ---- encode
+int run_encode(const std::string& protocol_name, const std::string& message, const std::vector<std::string>& assignments) {
+    const protocol& p = *find_protocol(protocol_name);
+    std::vector<std::pair<std::string, std::string>> values;
+    for (const auto& a : assignments) {
+        const auto eq = a.find('=');
+        if (eq == std::string::npos || eq == 0) {
+            err_line("error: expected name=value, got " + a);
+            return exit_usage;
+        }
+        values.emplace_back(a.substr(0, eq), a.substr(eq + 1));
+    }
+    const outcome o = p.encode(message, values);
+    if (o.status != exit_ok) {
+        err_line("error: " + o.error);
+        return o.status;
+    }
+    out_line(hex_of(o.bytes));
+    return exit_ok;
+}
+
+// ---- scan / monitor: OSP frames in a byte stream
+struct osp_printer {
+    bool json = false;
+    robowire::osp::scanner scanner;
+    void feed(std::span<const std::uint8_t> chunk) {
+        scanner.feed(chunk, [&](robowire::osp::scanner::frame_bytes f) {
+            const outcome o = osp_protocol().decode(f, direction::any);
+            if (o.status == exit_ok) {
+                if (json) out_line(render_json("osp", o));
+                else std::fputs(render_text("osp", o).c_str(), stdout);
+            } else if (json) {
+                out_line(render_json_error(o.error, {{"protocol", "osp"}, {"bytes", hex_of(f)}}));
+            } else {
+                out_line("osp frame " + hex_of(f) + ": " + o.error);
+            }
+            std::fflush(stdout);
+        });
+    }
+    void counters(const char* input) const {
+        if (json) {
+            out_line(render_json_counters({{"frames", scanner.frames()}, {"skipped_bytes", scanner.skipped()},
+                                           {"false_starts", scanner.false_starts()}},
+                                          input ? input : ""));
+            return;
+        }
+        std::printf("frames %llu, skipped bytes %llu, false starts %llu%s%s\n", static_cast<unsigned long long>(scanner.frames()),
+                    static_cast<unsigned long long>(scanner.skipped()), static_cast<unsigned long long>(scanner.false_starts()),
+                    input ? "; input read as " : "", input ? input : "");
+    }
+};
+
+int run_scan(const std::string& path, bool json, input_mode mode) {
+    osp_printer p;
+    p.json = json;
+    input in;
+    if (const int rc = read_input(path, mode, in)) return rc;
+    err_line(std::string("scan: reading ") + (path == "-" ? "stdin" : path) + " as " + input_kind(in.hex_text) +
+             (in.hex_text ? "" : " (use --hex for a hex dump)"));
+    p.feed(in.bytes);
+    p.counters(input_kind(in.hex_text));
+    return exit_ok;
+}
+
+speed_t baud_of(long baud) {
+    switch (baud) {
+    case 9600: return B9600;
+    case 19200: return B19200;
+    case 38400: return B38400;
+    case 57600: return B57600;
+    case 115200: return B115200;
+    case 230400: return B230400;
+    case 460800: return B460800;
+    default: return B921600;
+    }
+}
+
+struct monitor_options {
+    std::string device;
+    long baud = 115200;
+    long count = -1;
+    double timeout = -1;
+    bool json = false;
+};
+int run_monitor(const monitor_options& opt) {
+    osp_printer p;
+    p.json = opt.json;
+    const int fd = ::open(opt.device.c_str(), O_RDONLY | O_NOCTTY | O_NONBLOCK);
+    if (fd < 0) {
+        err_line("error: cannot open " + opt.device + ": " + std::strerror(errno));
+        return exit_bad_input;
+    }
+    termios tio{};
+    if (tcgetattr(fd, &tio) == 0) {
+        cfmakeraw(&tio);
+        cfsetispeed(&tio, baud_of(opt.baud));
+        cfsetospeed(&tio, baud_of(opt.baud));
+        tio.c_cflag |= CLOCAL | CREAD;
+        tcsetattr(fd, TCSANOW, &tio);
+    } else {
+        err_line("monitor: " + opt.device + " is not a serial port (" + std::strerror(errno) + "); reading it as it is");
+    }
+    const auto start = std::chrono::steady_clock::now();
+    std::uint8_t buf[1024];
+    for (;;) {
+        if (opt.count >= 0 && p.scanner.frames() >= static_cast<std::uint64_t>(opt.count)) break;
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (opt.timeout >= 0 && elapsed >= opt.timeout) break;
+        pollfd pfd{fd, POLLIN, 0};
+        if (::poll(&pfd, 1, 100) <= 0) continue;
+        const ssize_t n = ::read(fd, buf, sizeof buf);
+        if (n > 0) p.feed(std::span(buf, static_cast<std::size_t>(n)));
+        else if (n == 0 || (errno != EAGAIN && errno != EINTR)) break;
+    }
+    ::close(fd);
+    p.counters(nullptr);
+    return exit_ok;
+}
+
+// Subcommands defined elsewhere register here.
+void add_extra_commands([[maybe_unused]] CLI::App& app) {
+#ifdef ROBOWIRE_CLI_DISSECTOR
+    add_dissector_command(app);
+#endif
+}
+
+}  // namespace
+}  // namespace robowire::cli
+
+int main(int argc, char** argv) {
+    using namespace robowire::cli;
+    CLI::App app{"robowire - decode, encode and describe BuWizz3, NAVBOT-ES02 and OSP frames", "robowire"};
+    app.require_subcommand(1);
+    app.footer(
+        "Exit status: 0 ok; 1 bad input (the message names the problem, the byte and the field);\n"
+        "2 usage error (unknown command, option, protocol, message or field; bad option value).\n"
+        "Run robowire <command> --help for a command's options. Manual: docs/cli.md");
+    const std::vector<std::string> names = {"buwizz3", "navbot", "osp"};
+
+    // list
+    std::string list_protocol;
+    bool list_fields = false;
+    auto* list = app.add_subcommand("list", "every message: name, command byte(s), valid lengths; --fields: every field");
+    list->add_option("protocol", list_protocol, "buwizz3, navbot or osp (default: all)")->check(CLI::IsMember(names));
+    list->add_flag("--fields", list_fields, "each field: name, byte offset, wire type, valid values, unit, flag bits; records expanded");
+
+    // decode
+    decode_options dec_opt;
+    auto* dec = app.add_subcommand("decode", "decode one frame from hex bytes (any spelling) or a file");
+    dec->add_option("protocol", dec_opt.protocol, "buwizz3, navbot or osp")->required()->check(CLI::IsMember(names));
+    dec->add_option("hex", dec_opt.hex, "bytes: \"01 6D\", 016D, 0x01,0x6D, 01-6D, 01:6D, (0x) 01-6D");
+    dec->add_flag("--json", dec_opt.json, "one JSON object on stdout");
+    dec->add_option("--direction", dec_opt.direction,
+                    "BuWizz3: command or notification (default: what the command byte and length allow)")
+        ->check(CLI::IsMember({"command", "notification"}));
+    dec->add_option("--file", dec_opt.file, "read the frame from a file (- for stdin), binary or hex text");
+    auto* dec_hex = dec->add_flag("--hex", dec_opt.hex_file, "the file is hex text");
+    auto* dec_bin = dec->add_flag("--binary", dec_opt.binary_file, "the file is binary");
+    dec_hex->excludes(dec_bin);
+
+    // encode
+    std::string enc_protocol, enc_message;
+    std::vector<std::string> enc_values;
+    auto* enc = app.add_subcommand("encode", "build a frame from field values; prints hex");
+    enc->add_option("protocol", enc_protocol, "buwizz3, navbot or osp")->required()->check(CLI::IsMember(names));
+    enc->add_option("message", enc_message, "message name (robowire list)")->required();
+    enc->add_option("values", enc_values,
+                    "name=value: arrays and records as comma lists in the order robowire list --fields shows, enums by name");
+
+    // scan
+    std::string scan_protocol, scan_path = "-";
+    bool scan_json = false, scan_hex = false, scan_bin = false;
+    auto* scan = app.add_subcommand("scan", "find and decode OSP frames in a byte stream (binary or hex text)");
+    scan->add_option("protocol", scan_protocol, "osp")->required()->check(CLI::IsMember({"osp"}));
+    scan->add_option("file", scan_path, "file to read, - for stdin (default)");
+    scan->add_flag("--json", scan_json, "JSON lines on stdout: messages, errors, counters (each with a \"type\")");
+    auto* scan_hexf = scan->add_flag("--hex", scan_hex, "the input is hex text");
+    auto* scan_binf = scan->add_flag("--binary", scan_bin, "the input is binary");
+    scan_hexf->excludes(scan_binf);
+
+    // monitor
+    monitor_options mon_opt;
+    auto* mon = app.add_subcommand("monitor", "read OSP frames from a serial port (raw mode) as they come");
+    mon->add_option("device", mon_opt.device, "serial device, e.g. /dev/ttyUSB0")->required();
+    mon->add_option("--baud", mon_opt.baud, "9600, 19200, 38400, 57600, 115200 (default), 230400, 460800 or 921600")
+        ->check(CLI::IsMember({9600L, 19200L, 38400L, 57600L, 115200L, 230400L, 460800L, 921600L}));
+    mon->add_option("--count", mon_opt.count, "stop after N frames")->check(not_negative);
+    mon->add_option("--timeout", mon_opt.timeout, "stop after S seconds")->check(not_negative);
+    mon->add_flag("--json", mon_opt.json, "JSON lines on stdout: messages, errors, counters (each with a \"type\")");
+
+    add_extra_commands(app);
+
+    if (argc < 2) {
+        std::fputs(app.help().c_str(), stderr);
+        return exit_usage;
+    }
+    if (argv[1][0] != '-' && app.get_subcommands([&](CLI::App* sub) { return sub->get_name() == argv[1]; }).empty()) {
+        std::fprintf(stderr, "error: unknown command %s (robowire --help)\n", argv[1]);
+        return exit_usage;
+    }
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        if (e.get_exit_code() == 0) return app.exit(e);  // --help
+        std::fprintf(stderr, "error: %s (robowire --help)\n", e.what());
+        return exit_usage;
+    } catch (const CLI::Error& e) {  // thrown by an extra subcommand's callback
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return e.get_exit_code();
+    }
+
+    if (list->parsed()) {
+        for (const protocol* p : protocols())
+            if (list_protocol.empty() || list_protocol == p->name) std::fputs(p->list(list_fields).c_str(), stdout);
+        return exit_ok;
+    }
+    if (dec->parsed()) return run_decode(dec_opt);
+    if (enc->parsed()) return run_encode(enc_protocol, enc_message, enc_values);
+    if (scan->parsed())
+        return run_scan(scan_path, scan_json, scan_hex ? input_mode::hex : scan_bin ? input_mode::binary : input_mode::detect);
+    if (mon->parsed()) return run_monitor(mon_opt);
+    return exit_ok;  // an extra subcommand ran in its callback
+}
