@@ -2,6 +2,8 @@
 // the library's field tables; scan an OSP byte stream; watch a serial port.
 #include <robowire/robowire.hpp>
 
+#include "dissector.hpp"
+
 #include <fcntl.h>
 #include <poll.h>
 #include <termios.h>
@@ -642,6 +644,14 @@ int main(int argc, char** argv) {
             std::fputs(help_text, stdout);
             return 0;
         }
+    // ---- dissector <buwizz3|navbot|osp|all> [--output DIR]: Wireshark Lua plugins (tools/dissector.hpp)
+    if (cmd == "dissector") {
+        std::string dir = ".";
+        if (args.size() == 3 && args[1] == "--output") dir = args[2];
+        else if (args.size() != 1) return usage_error("usage: robowire dissector <buwizz3|navbot|osp|all> [--output DIR]");
+        return robowire::tool::write_dissectors(args[0], dir.c_str(), stderr);
+    }
+    // ---- end dissector
     if (cmd == "list") return cmd_list(args);
     if (cmd == "decode") return cmd_decode(args);
     if (cmd == "encode") return cmd_encode(args);
