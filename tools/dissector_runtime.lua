@@ -176,7 +176,7 @@ local function dissect_message(tvb, pinfo, tree, dir)
     if not m then
         root:add_proto_expert_info(ex_unknown, "unknown command " .. key_text(tvb))
         root:append_text(": unknown command " .. key_text(tvb))
-        return nil
+        return nil, root
     end
     root:append_text(": " .. m.n)
     root:add(pf_message, m.n)
@@ -192,7 +192,7 @@ local function dissect_message(tvb, pinfo, tree, dir)
         root:add_proto_expert_info(ex_length, m.n .. ": " .. len .. " bytes, at most " .. m.mi .. " expected")
     end
     add_fields(root, tvb, 0, m.f, math.min(len, m.max), m.n)
-    return m
+    return m, root
 end
 
 local function append_info(pinfo, text)
@@ -265,9 +265,9 @@ if P.ble then
     local function dissect_ble(tvb, pinfo, tree)
         pinfo.cols.protocol:set(P.name)
         local dir = direction()
-        local m = dissect_message(tvb, pinfo, tree, dir)
+        local m, root = dissect_message(tvb, pinfo, tree, dir)
         append_info(pinfo, m and m.n or ("unknown command " .. key_text(tvb)))
-        if m and P.multiframe then multiframe(tvb, pinfo, tree, m, dir) end
+        if m and P.multiframe then multiframe(tvb, pinfo, root, m, dir) end
         return tvb:len()
     end
     proto.dissector = dissect_ble

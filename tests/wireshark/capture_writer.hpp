@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace capture {
@@ -63,8 +64,7 @@ private:
 class btsnoop {
 public:
     btsnoop() {
-        const char magic[8] = {'b', 't', 's', 'n', 'o', 'o', 'p', '\0'};
-        out_.insert(out_.end(), magic, magic + 8);
+        for (const char c : std::string_view("btsnoop", 8)) out_.push_back(static_cast<std::uint8_t>(c));
         put_be(out_, 1, 4);
         put_be(out_, 1002, 4);
     }

@@ -5,7 +5,9 @@
 #include <robowire/robowire.hpp>
 
 #include <cstdio>
+#include <cstdlib>
 #include <map>
+#include <utility>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -34,6 +36,11 @@ std::string json_string(std::string_view s) {
         }
     }
     return o + '"';
+}
+// Appends every piece to o (no temporaries chained with +).
+template <class... S>
+void put(std::string& o, const S&... pieces) {
+    ((o += pieces), ...);
 }
 std::string real(double v) {
     char buf[40];
@@ -67,7 +74,11 @@ void collect_element(const F& f, const E& e, const std::string& abbr, field_valu
         if constexpr (std::is_enum_v<E>) raw = static_cast<double>(static_cast<std::underlying_type_t<E>>(e));
         else raw = static_cast<double>(e);
         out[abbr].push_back(real(raw));
-        if (!f.unit.name.empty()) out[abbr + ".value"].push_back(real(raw * f.unit.scale + f.unit.offset));
+        if (!f.unit.name.empty()) {
+            std::string key;
+            put(key, abbr, ".value");
+            out[key].push_back(real(raw * f.unit.scale + f.unit.offset));
+        }
     }
 }
 
@@ -75,7 +86,8 @@ template <class M>
 void collect(const M& m, const std::string& prefix, field_values& out) {
     robowire::for_each_field<M>([&](const auto& f) {
         using F = std::remove_cvref_t<decltype(f)>;
-        const std::string abbr = prefix + "." + std::string(f.name);
+        std::string abbr;
+        put(abbr, prefix, ".", f.name);
         const auto& member = m.*(f.member);
         auto value = [&](const auto& v) {
             if constexpr (F::is_array)
@@ -103,7 +115,7 @@ std::string field_at(std::size_t offset, std::size_t base = 0) {
             const std::size_t k = (offset - base - f.offset) / F::element_size;
             const std::string inner =
                 field_at<typename F::element_type>(offset, base + f.offset + k * F::element_size);
-            if (!inner.empty()) found += "." + inner;
+            if (!inner.empty()) put(found, ".", inner);
         }
     });
     return found;
@@ -122,30 +134,35 @@ struct expectations {
     void message(const M& m, const std::string& extra = {}) {
         field_values values;
         const std::string name(robowire::table_v<M>.name);
-        collect(m, protocol + "." + name, values);
-        std::string o = "{\"message\":" + json_string(name) + ",\"fields\":{";
+        std::string prefix;
+        put(prefix, protocol, ".", name);
+        collect(m, prefix, values);
+        std::string o;
+        put(o, "{\"message\":", json_string(name), ",\"fields\":{");
         bool first = true;
         for (const auto& [k, v] : values) {
-            o += (first ? "" : ",") + json_string(k) + ":[";
-            for (std::size_t i = 0; i < v.size(); ++i) o += (i ? "," : "") + v[i];
+            put(o, first ? "" : ",", json_string(k), ":[");
+            for (std::size_t i = 0; i < v.size(); ++i) put(o, i ? "," : "", v[i]);
             o += "]";
             first = false;
         }
-        o += "}" + extra + "}";
+        put(o, "}", extra, "}");
         packets[count].push_back(o);
     }
     // A packet robowire rejects: `message` (null: unknown) and the text the warning must contain.
     void bad(const std::string& message, const std::string& expert) {
-        packets[count].push_back("{\"message\":" + (message.empty() ? std::string("null") : json_string(message)) +
-                                 ",\"expert\":" + json_string(expert) + "}");
+        std::string o;
+        put(o, "{\"message\":", message.empty() ? std::string("null") : json_string(message), ",\"expert\":",
+            json_string(expert), "}");
+        packets[count].push_back(o);
     }
     bool save(const std::string& path) const {
-        std::string o = "{\"protocol\":" + json_string(protocol) + ",\"noise\":" + std::to_string(noise) +
-                        ",\"packets\":{";
+        std::string o;
+        put(o, "{\"protocol\":", json_string(protocol), ",\"noise\":", std::to_string(noise), ",\"packets\":{");
         bool first = true;
         for (const auto& [n, msgs] : packets) {
-            o += (first ? "\"" : ",\"") + std::to_string(n) + "\":[";
-            for (std::size_t i = 0; i < msgs.size(); ++i) o += (i ? "," : "") + msgs[i];
+            put(o, first ? "\"" : ",\"", std::to_string(n), "\":[");
+            for (std::size_t i = 0; i < msgs.size(); ++i) put(o, i ? "," : "", msgs[i]);
             o += "]";
             first = false;
         }
@@ -315,7 +332,8 @@ void nb_frame(ble_capture& c, std::span<const std::uint8_t> bytes, bool notify, 
     c.exp.next();
     const auto d = nb::decode_frame(bytes);
     if (!d) std::abort();
-    const std::string extra = json_text.empty() ? std::string() : ",\"json\":" + json_string(json_text);
+    std::string extra;
+    if (!json_text.empty()) put(extra, ",\"json\":", json_string(json_text));
     std::visit([&](const auto& x) { c.exp.message(x, extra); }, *d);
 }
 
@@ -363,6 +381,17 @@ bool navbot_session(const std::string& dir_path) {
 }
 
 // ---------------------------------------------------------------- OSP stream
+template <std::size_t... I>
+void osp_bad(expectations& exp, const osp::frame& f, const robowire::error& e, std::index_sequence<I...>) {
+    auto one = [&](auto index) {
+        using M = std::variant_alternative_t<decltype(index)::value, osp::message>;
+        const auto& fx = robowire::table_v<M>.fixed;
+        if (fx[2].value == f.device && fx[3].value == f.command)
+            exp.bad(std::string(robowire::table_v<M>.name), error_field<M>(e));
+    };
+    (one(std::integral_constant<std::size_t, I>{}), ...);
+}
+
 struct osp_stream {
     capture::pcapng file{147};
     expectations exp;
@@ -379,13 +408,11 @@ struct osp_stream {
                 std::visit([&](const auto& x) { exp.message(x); }, *r);
             } else if (r.error().code == robowire::errc::unknown_message) {
                 exp.bad("", "unknown command");
+            } else if (r.frame()) {
+                // a field error: the message its DEV and CMD name
+                osp_bad(exp, *r.frame(), r.error(), std::make_index_sequence<std::variant_size_v<osp::message>>{});
             } else {
-                std::string field;
-                std::visit([&](const auto& x) {
-                    using M = std::remove_cvref_t<decltype(x)>;
-                    field = error_field<M>(r.error());
-                    exp.bad(std::string(robowire::table_v<M>.name), field);
-                }, *r);
+                std::abort();
             }
         });
         exp.noise += static_cast<std::size_t>(sc.skipped() - skipped);
