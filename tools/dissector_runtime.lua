@@ -110,7 +110,7 @@ local function add_element(tree, tvb, f, off, len, path)
         item:add_proto_expert_info(ex_range, path .. " = " .. v .. " is outside " .. f.r[1] .. ".." .. f.r[2])
     end
     if f.u then
-        item:add(f.pfv, r, v * f.s + f.a)
+        item:add(f.pfv, r, v * f.s + f.a):set_generated()
     end
 end
 
