@@ -18,7 +18,7 @@ local ex_range = ProtoExpert.new(P.name .. ".out_of_range", "Value outside the v
 local ex_enum = ProtoExpert.new(P.name .. ".invalid_enum", "Invalid enumeration value",
     expert.group.PROTOCOL, expert.severity.WARN)
 local ex_length = ProtoExpert.new(P.name .. ".bad_length", "Wrong length",
-    expert.group.MALFORMED, expert.severity.WARN)
+    expert.group.PROTOCOL, expert.severity.WARN)
 local ex_unknown = ProtoExpert.new(P.name .. ".unknown_command", "Unknown command",
     expert.group.PROTOCOL, expert.severity.WARN)
 local ex_fixed = ProtoExpert.new(P.name .. ".bad_fixed_byte", "Wrong fixed byte",

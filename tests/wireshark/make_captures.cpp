@@ -105,13 +105,14 @@ void collect(const M& m, const std::string& prefix, field_values& out) {
 
 // Name of the field of M at byte `offset` ("" if none), records as a.b.
 template <class M>
-std::string field_at(std::size_t offset, std::size_t base = 0) {
+std::string field_at(std::size_t offset, std::size_t base = 0, bool descend = true) {
     std::string found;
     robowire::for_each_field<M>([&](const auto& f) {
         using F = std::remove_cvref_t<decltype(f)>;
         if (!found.empty() || offset < base + f.offset || offset >= base + f.end()) return;
         found = std::string(f.name);
         if constexpr (F::kind == robowire::wire_kind::record) {
+            if (!descend) return;
             const std::size_t k = (offset - base - f.offset) / F::element_size;
             const std::string inner =
                 field_at<typename F::element_type>(offset, base + f.offset + k * F::element_size);
@@ -172,9 +173,10 @@ struct expectations {
 };
 
 // What a decode error is about: the field at its offset.
+// (a length error: the field or block that is cut short, not a field inside it)
 template <class M>
 std::string error_field(const robowire::error& e) {
-    return field_at<M>(e.offset);
+    return field_at<M>(e.offset, 0, e.code != robowire::errc::bad_length);
 }
 
 // ---------------------------------------------------------------- BLE sessions
@@ -322,6 +324,16 @@ bool buwizz3_session(const std::string& dir_path) {
     bw_bad_command(c, bw::set_accel_lpf{}, 1, 0x07);
     bw_bad_command(c, bw::set_pid_parameters{}, 34, 0);
     bw_bad_command(c, bw::set_motor_data{}, 0, 0x99);
+    {  // a status with a truncated PID block (60 bytes): wrong length
+        auto bytes = robowire::encode(s);
+        if (!bytes) std::abort();
+        bytes->resize(60);
+        c.add(dir::received, acl(att(0x1b, 0x0011, bytes->span())));
+        c.exp.next();
+        const auto d = bw::decode_notification(bytes->span());
+        if (d || d.error().code != robowire::errc::bad_length) std::abort();
+        c.exp.bad("status", error_field<bw::status>(d.error()));
+    }
     return c.pcap.save(dir_path + "/buwizz3.pcap") && c.snoop.save(dir_path + "/buwizz3.btsnoop") &&
            c.exp.save(dir_path + "/buwizz3.json");
 }
