@@ -3,7 +3,8 @@
 robowire's encoders, must show for every packet exactly what robowire's own
 decoders make of the same bytes (NAME.json, written next to each capture).
 
-usage: test_wireshark.py CAPTURE_WRITER DISSECTOR_GENERATOR
+usage: test_wireshark.py CAPTURE_WRITER DISSECTOR_GENERATOR [ROBOWIRE_CLI]
+(with the CLI: `robowire dissector all --output DIR` must write the same plugins)
 """
 import json
 import math
@@ -147,6 +148,15 @@ def main():
         plugins = os.path.join(home, ".local", "lib", "wireshark", "plugins")
         os.makedirs(plugins)
         subprocess.run([generator, "all", plugins], check=True)
+        if len(sys.argv) > 3:
+            from_cli = os.path.join(tmp, "cli")
+            os.makedirs(from_cli)
+            subprocess.run([sys.argv[3], "dissector", "all", "--output", from_cli], check=True)
+            for p in ("buwizz3", "navbot", "osp"):
+                a = open(os.path.join(plugins, f"robowire_{p}.lua")).read()
+                b = open(os.path.join(from_cli, f"robowire_{p}.lua")).read()
+                if a != b or len(a) < 1000:
+                    fail(f"robowire dissector {p}: not the generator's plugin")
         caps = os.path.join(tmp, "captures")
         os.makedirs(caps)
         subprocess.run([writer, caps], check=True)
