@@ -71,9 +71,10 @@ end
 
 -- Adds element i of field f at byte `off`; `path` names it in expert texts.
 local add_fields
-local function add_element(tree, tvb, f, off, len, path)
+local function add_element(tree, tvb, f, off, len, path, index)
     if f.k == "record" then
         local item = tree:add(f.pf, tvb(off, f.es))
+        if index then item:set_text(f.n .. "[" .. index .. "]") end
         add_fields(item, tvb, off, f.f, len, path)
         return
     end
@@ -104,6 +105,9 @@ local function add_element(tree, tvb, f, off, len, path)
     else
         v = r:le_int(); item = tree:add_le(f.pf, r)
     end
+    if index and not f.e and f.k ~= "bits" and f.k ~= "f32le" then
+        item:set_text(f.n .. "[" .. index .. "]: " .. v)
+    end
     if f.e and f.e[v] == nil then
         item:add_proto_expert_info(ex_enum, path .. " = " .. v .. " is not valid (valid: " .. enum_names(f.e) .. ")")
     elseif f.r and (v < f.r[1] or v > f.r[2]) then
@@ -128,8 +132,11 @@ add_fields = function(tree, tvb, base_off, list, len, prefix)
             return
         else
             for i = 0, f.c - 1 do
-                local p = f.c > 1 and (path .. "[" .. i .. "]") or path
-                add_element(tree, tvb, f, off + i * f.es, len, p)
+                if f.c > 1 then
+                    add_element(tree, tvb, f, off + i * f.es, len, path .. "[" .. i .. "]", i)
+                else
+                    add_element(tree, tvb, f, off, len, path, nil)
+                end
             end
         end
     end
