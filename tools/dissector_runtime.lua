@@ -270,6 +270,7 @@ if P.ble then
     end
 
     local function dissect_ble(tvb, pinfo, tree)
+        if tvb:len() == 0 then return 0 end
         pinfo.cols.protocol:set(P.name)
         local dir = direction()
         local m, root = dissect_message(tvb, pinfo, tree, dir)
