@@ -93,10 +93,9 @@ std::span<const protocol* const> protocols();
 const protocol* find_protocol(std::string_view name);
 
 // ---- more subcommands
-// Adds `robowire dissector <protocol> [--output DIR]` (tools/dissector.cpp,
-// built when present; main.cpp calls it when ROBOWIRE_CLI_DISSECTOR is
-// defined). Other subcommands are added the same way: a function taking the
-// app, declared here, called from main.cpp's add_extra_commands().
+// Adds `robowire dissector <protocol> [--output DIR]` (dissector_command.cpp).
+// Other subcommands are added the same way: a function taking the app,
+// declared here, called from main.cpp's add_extra_commands().
 void add_dissector_command(CLI::App& app);
 
 }  // namespace robowire::cli

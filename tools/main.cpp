@@ -261,11 +261,7 @@ int run_monitor(const monitor_options& opt) {
 }
 
 // Subcommands defined elsewhere register here.
-void add_extra_commands([[maybe_unused]] CLI::App& app) {
-#ifdef ROBOWIRE_CLI_DISSECTOR
-    add_dissector_command(app);
-#endif
-}
+void add_extra_commands(CLI::App& app) { add_dissector_command(app); }
 
 }  // namespace
 }  // namespace robowire::cli
