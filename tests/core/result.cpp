@@ -2,6 +2,10 @@
 
 #include <array>
 #include <catch2/catch.hpp>
+#include <csetjmp>
+#include <string_view>
+#include <type_traits>
+#include <utility>
 
 using namespace robowire;
 
@@ -31,3 +35,59 @@ TEST_CASE("result<T> holds a value or an error with an offset", "[core][result]"
     CHECK(sum == 6);
     CHECK(to_string(errc::bad_trailer) == "bad trailer byte");
 }
+
+TEST_CASE("error converts to bool like std::error_code", "[core][result]") {
+    STATIC_REQUIRE(!error{});
+    STATIC_REQUIRE(static_cast<bool>(error{errc::too_short, 0}));
+    STATIC_REQUIRE(static_cast<bool>(fail(errc::bad_json, 9)));
+    STATIC_REQUIRE(!std::is_convertible_v<error, bool>);  // explicit: no accidental arithmetic
+    int seen = 0;
+    if (auto e = half(7).error()) seen = static_cast<int>(e.offset);
+    CHECK(seen == 3);
+}
+
+#if defined(__cpp_exceptions)
+TEST_CASE("value() of an error throws bad_result_access", "[core][result]") {
+    STATIC_REQUIRE(std::is_base_of_v<std::exception, bad_result_access>);
+    STATIC_REQUIRE(!noexcept(std::declval<const result<int>&>().value()));
+    const auto r = half(7);
+    bool thrown = false;
+    try {
+        (void)r.value();
+    } catch (const bad_result_access& e) {
+        thrown = true;
+        CHECK(std::string_view(e.what()) == "robowire: value() of a result that holds an error: value out of range at byte 3");
+        CHECK(e.error() == error{errc::value_out_of_range, 3});
+    }
+    CHECK(thrown);
+    CHECK_THROWS_AS(*r, bad_result_access);
+    CHECK_THROWS_AS(half(8).error(), bad_result_access);
+    CHECK_THROWS_WITH(half(8).error(), "robowire: error() of a result that holds a value");
+    // the longest code text and a large offset still fit the fixed buffer
+    const bad_result_access big(error{errc::missing_field, 18446744073709551615u});
+    CHECK(std::string_view(big.what()) ==
+          "robowire: value() of a result that holds an error: optional block present without the one before it "
+          "at byte 18446744073709551615");
+}
+#else
+// The noexcept test target is built with -DROBOWIRE_BAD_RESULT_ACCESS_HANDLER=test_bad_result_access.
+namespace {
+std::jmp_buf handler_jump;
+error handled{};
+int read_value(const result<int>& r) { return r.value(); }
+}  // namespace
+
+void test_bad_result_access(robowire::error e) noexcept {
+    handled = e;
+    std::longjmp(handler_jump, 1);
+}
+
+TEST_CASE("without exceptions value() of an error calls the handler", "[core][result]") {
+    STATIC_REQUIRE(noexcept(std::declval<const result<int>&>().value()));
+    const auto r = half(7);
+    int got = 0;
+    if (setjmp(handler_jump) == 0) got = read_value(r);
+    CHECK(got == 0);
+    CHECK(handled == error{errc::value_out_of_range, 3});
+}
+#endif

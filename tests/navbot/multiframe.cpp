@@ -1,6 +1,8 @@
+#include <robowire/navbot/maneuver.hpp>
 #include <robowire/navbot/multiframe.hpp>
 
 #include <catch2/catch.hpp>
+#include <string>
 #include <vector>
 
 #include "check.hpp"
@@ -78,15 +80,22 @@ TEST_CASE("navbot: JSON text round trip", "[navbot][multiframe]") {
 }
 
 TEST_CASE("navbot: reassembler error paths", "[navbot][multiframe]") {
-    reassembler<45> r;
-    SECTION("wrong command mid-message") {
+    reassembler<45> r;  // three frames
+    SECTION("another multi-frame message mid-message") {
         CHECK(r.push(make_frame(2, 2, 'a')).value() == reassembly::need_more);
         CHECK(r.push(make_frame(1, 1, 'b')).error() == error{errc::command_changed, 2});
-        CHECK(r.push(make_frame(2, 0, 'c')).value() == reassembly::discarded);  // end of the broken message
-        CHECK(r.push(make_frame(2, 0, 'd')).value() == reassembly::complete);   // a fresh one
+        CHECK(r.in_progress());  // the frame of command 1 starts a new message
+        CHECK(r.command() == 1);
+        CHECK(r.push(make_frame(2, 1, 'a')).value() == reassembly::discarded);  // rest of the broken message
+        CHECK(r.push(make_frame(2, 0, 'a')).value() == reassembly::discarded);
+        CHECK(r.push(make_frame(1, 0, 'c')).value() == reassembly::complete);
+        CHECK(r.command() == 1);
+        REQUIRE(r.payload().size() == 30);
+        CHECK((r.payload()[0] == 'b' && r.payload()[15] == 'c'));
+        CHECK(r.push(make_frame(2, 0, 'd')).value() == reassembly::complete);  // the broken one is over
         CHECK(r.payload()[0] == 'd');
     }
-    SECTION("skipped frame") {
+    SECTION("skipped frame at the end: the message is over") {
         CHECK(r.push(make_frame(2, 2, 'a')).value() == reassembly::need_more);
         CHECK(r.push(make_frame(2, 0, 'c')).error() == error{errc::bad_sequence, 3});  // remaining 1 was lost
         CHECK_FALSE(r.in_progress());
@@ -95,20 +104,15 @@ TEST_CASE("navbot: reassembler error paths", "[navbot][multiframe]") {
         CHECK(r.payload().size() == 30);
         CHECK(r.payload()[15] == 'y');
     }
-    SECTION("remaining goes up mid-message") {
-        CHECK(r.push(make_frame(2, 1, 'a')).value() == reassembly::need_more);
-        CHECK(r.push(make_frame(2, 2, 'b')).error() == error{errc::bad_sequence, 3});
-        CHECK(r.push(make_frame(2, 1, 'b')).value() == reassembly::discarded);
-        CHECK(r.push(make_frame(2, 0, 'b')).value() == reassembly::discarded);
-        CHECK(r.push(make_frame(2, 0, 'z')).value() == reassembly::complete);
-    }
-    SECTION("overflow") {
-        CHECK(r.push(make_frame(2, 3, 'a')).value() == reassembly::need_more);
-        CHECK(r.push(make_frame(2, 2, 'b')).value() == reassembly::need_more);
-        CHECK(r.push(make_frame(2, 1, 'c')).value() == reassembly::need_more);
-        CHECK(r.push(make_frame(2, 0, 'd')).error() == error{errc::capacity_exceeded, 5});  // 60 > 45
+    SECTION("overflow: known from the first frame's remaining") {
+        CHECK(r.push(make_frame(2, 3, 'a')).error() == error{errc::capacity_exceeded, 3});  // 4 frames > 45 bytes
+        CHECK(r.push(make_frame(0x10, 0, 'm')).value() == reassembly::complete);  // other traffic goes on
+        CHECK(r.push(make_frame(2, 2, 'b')).value() == reassembly::discarded);
+        CHECK(r.push(make_frame(2, 1, 'c')).value() == reassembly::discarded);
+        CHECK(r.push(make_frame(2, 0, 'd')).value() == reassembly::discarded);
         CHECK(r.push(make_frame(2, 0, 'e')).value() == reassembly::complete);
         CHECK(r.payload().size() == 15);
+        CHECK(r.payload()[0] == 'e');
     }
     SECTION("frame after error: not a frame, then the message goes on") {
         CHECK(r.push(make_frame(2, 1, 'a')).value() == reassembly::need_more);
@@ -126,4 +130,140 @@ TEST_CASE("navbot: reassembler error paths", "[navbot][multiframe]") {
         CHECK(r.push(make_frame(6, 1, 'r')).value() == reassembly::need_more);
         CHECK(r.command() == 6);
     }
+    SECTION("clear forgets the message being discarded") {
+        CHECK(r.push(make_frame(2, 5, 'a')).error() == error{errc::capacity_exceeded, 3});
+        r.clear();
+        CHECK(r.push(make_frame(2, 1, 'b')).value() == reassembly::need_more);
+    }
+}
+
+TEST_CASE("navbot: single frames of another command inside a message", "[navbot][multiframe]") {
+    reassembler<45> r;
+    CHECK(r.push(make_frame(2, 2, 'a')).value() == reassembly::need_more);
+    CHECK(r.push(make_frame(0x10, 0, 'm')).value() == reassembly::single);
+    CHECK(r.in_progress());
+    CHECK(r.push(make_frame(2, 1, 'b')).value() == reassembly::need_more);
+    CHECK(r.push(make_frame(0x10, 0, 'm')).value() == reassembly::single);
+    CHECK(r.push(make_frame(0x11, 0, 'n')).value() == reassembly::single);
+    CHECK(r.push(make_frame(2, 0, 'c')).value() == reassembly::complete);
+    CHECK(r.command() == 2);
+    REQUIRE(r.payload().size() == 45);
+    CHECK((r.payload()[0] == 'a' && r.payload()[15] == 'b' && r.payload()[30] == 'c'));
+    // with nothing in progress a one-frame message is simply complete
+    CHECK(r.push(make_frame(0x10, 0, 'm')).value() == reassembly::complete);
+    CHECK(r.command() == 0x10);
+}
+
+TEST_CASE("navbot: a 300-byte JSON reply while maneuver frames keep coming", "[navbot][multiframe]") {
+    // {"pad":"xxx...x"} with 289 x: 8 + 289 + 2 = 299 characters, + a final space = 300 (20 frames).
+    const std::string text = R"({"pad":")" + std::string(289, 'x') + R"("} )";
+    REQUIRE(text.size() == 300);
+    const auto frames = json_frames(text).value();
+    REQUIRE(frames.size() == 20);
+    maneuver m{};
+    m.switch_a = switch_a::start;
+    m.pitch = 10;
+    const auto drive = robowire::encode(m).value();
+    reassembler<300> r;
+    std::size_t i = 0;
+    for (const auto& f : frames) {
+        ++i;
+        const auto st = r.push(f);
+        REQUIRE(st);
+        CHECK(*st == (i == 20 ? reassembly::complete : reassembly::need_more));
+        if (i < 20) CHECK(r.push(drive).value() == reassembly::single);
+    }
+    CHECK(r.command() == command::json);
+    CHECK(r.text() == text);
+    CHECK(r.json().value() == text);
+}
+
+TEST_CASE("navbot: repeated frames", "[navbot][multiframe]") {
+    reassembler<45> r;
+    CHECK(r.push(make_frame(2, 2, 'a')).value() == reassembly::need_more);
+    CHECK(r.push(make_frame(2, 2, 'a')).value() == reassembly::duplicate);
+    CHECK(r.push(make_frame(2, 1, 'b')).value() == reassembly::need_more);
+    CHECK(r.push(make_frame(2, 1, 'b')).value() == reassembly::duplicate);
+    CHECK(r.push(make_frame(2, 0, 'c')).value() == reassembly::complete);
+    CHECK(r.push(make_frame(2, 0, 'c')).value() == reassembly::duplicate);  // not a one-frame tail
+    REQUIRE(r.payload().size() == 45);  // the completed message is still there
+    CHECK(r.payload()[30] == 'c');
+    // a one-frame message sent twice is two messages (the app repeats maneuvers)
+    CHECK(r.push(make_frame(0x10, 0, 'd')).value() == reassembly::complete);
+    CHECK(r.push(make_frame(0x10, 0, 'd')).value() == reassembly::complete);
+    CHECK(r.payload().size() == 15);
+    // a late repeat of the multi-frame message's last frame is still a repeat, not a one-frame message
+    CHECK(r.push(make_frame(2, 0, 'c')).value() == reassembly::duplicate);
+    CHECK(r.command() == 0x10);
+}
+
+TEST_CASE("navbot: the sender starts a message over", "[navbot][multiframe]") {
+    reassembler<45> r;
+    SECTION("higher remaining") {
+        CHECK(r.push(make_frame(2, 2, 'a')).value() == reassembly::need_more);
+        CHECK(r.push(make_frame(2, 1, 'b')).value() == reassembly::need_more);
+        CHECK(r.push(make_frame(2, 2, 'x')).value() == reassembly::restarted);
+        CHECK(r.push(make_frame(2, 1, 'y')).value() == reassembly::need_more);
+        CHECK(r.push(make_frame(2, 0, 'z')).value() == reassembly::complete);
+        REQUIRE(r.payload().size() == 45);
+        CHECK((r.payload()[0] == 'x' && r.payload()[15] == 'y' && r.payload()[30] == 'z'));
+    }
+    SECTION("same remaining, other bytes") {
+        CHECK(r.push(make_frame(2, 1, 'a')).value() == reassembly::need_more);
+        CHECK(r.push(make_frame(2, 1, 'b')).value() == reassembly::restarted);
+        CHECK(r.push(make_frame(2, 0, 'c')).value() == reassembly::complete);
+        REQUIRE(r.payload().size() == 30);
+        CHECK((r.payload()[0] == 'b' && r.payload()[15] == 'c'));
+    }
+    SECTION("restart too long for the capacity") {
+        CHECK(r.push(make_frame(2, 1, 'a')).value() == reassembly::need_more);
+        CHECK(r.push(make_frame(2, 4, 'b')).error() == error{errc::capacity_exceeded, 3});
+        CHECK_FALSE(r.in_progress());
+        CHECK(r.push(make_frame(2, 3, 'b')).value() == reassembly::discarded);
+        CHECK(r.push(make_frame(2, 0, 'b')).value() == reassembly::discarded);
+        CHECK(r.push(make_frame(2, 0, 'e')).value() == reassembly::complete);
+    }
+}
+
+TEST_CASE("navbot: lost frames inside a message", "[navbot][multiframe]") {
+    reassembler<90> r;
+    CHECK(r.push(make_frame(2, 5, 'a')).value() == reassembly::need_more);
+    CHECK(r.push(make_frame(2, 3, 'c')).error() == error{errc::bad_sequence, 3});  // remaining 4 lost
+    CHECK_FALSE(r.in_progress());
+    CHECK(r.push(make_frame(0x10, 0, 'm')).value() == reassembly::complete);  // other traffic goes on
+    CHECK(r.push(make_frame(2, 2, 'd')).value() == reassembly::discarded);
+    CHECK(r.push(make_frame(2, 1, 'e')).value() == reassembly::discarded);
+    CHECK(r.push(make_frame(2, 0, 'f')).value() == reassembly::discarded);  // end of the broken message
+    CHECK(r.push(make_frame(2, 0, 'n')).value() == reassembly::complete);
+    CHECK(r.payload().size() == 15);
+    CHECK(r.payload()[0] == 'n');
+}
+
+TEST_CASE("navbot: listening from the middle of a message", "[navbot][multiframe]") {
+    // {"type":"get_device_info"}: frame 0 carries {"type":"get_de, frame 1 vice_info"}
+    const auto frames = json_frames(R"({"type":"get_device_info"})").value();
+    REQUIRE(frames.size() == 2);
+    reassembler<60> r;
+    CHECK(r.push(frames[1]).value() == reassembly::complete);  // cannot be told from a one-frame message
+    CHECK(r.text() == R"(vice_info"})");
+    CHECK(r.json().error() == error{errc::bad_json, 0});
+    CHECK(r.push(frames[0]).value() == reassembly::need_more);
+    CHECK(r.json().error() == error{errc::too_short, 15});  // nothing complete
+    CHECK(r.push(frames[1]).value() == reassembly::complete);
+    CHECK(r.json().value() == R"({"type":"get_device_info"})");
+}
+
+TEST_CASE("navbot: json_object", "[navbot][multiframe]") {
+    STATIC_REQUIRE(json_object(R"({"a":1})").value() == R"({"a":1})");
+    STATIC_REQUIRE(json_object(" {\"a\":[1,{\"b\":\"}]\"}]} \r\n").has_value());  // braces inside a string
+    STATIC_REQUIRE(json_object(R"({"a":"\"}"})").has_value());                    // escaped quote
+    STATIC_REQUIRE(json_object(R"({"a":1)").error() == error{errc::bad_json, 6});    // ends inside
+    STATIC_REQUIRE(json_object(R"({"a":"x})").error() == error{errc::bad_json, 8});  // string not closed
+    STATIC_REQUIRE(json_object(R"("a":1})").error() == error{errc::bad_json, 0});    // not an object
+    STATIC_REQUIRE(json_object(R"({"a":1}})").error() == error{errc::bad_json, 7});  // more after it
+    STATIC_REQUIRE(json_object(R"({"a":1} {"b":2})").error() == error{errc::bad_json, 8});
+    STATIC_REQUIRE(json_object(R"({"a":[1})").error() == error{errc::bad_json, 7});  // ] expected
+    STATIC_REQUIRE(json_object("").error() == error{errc::bad_json, 0});
+    STATIC_REQUIRE(json_object("{\"a\":\"\n\"}").error() == error{errc::bad_json, 6});  // raw newline in a string
+    STATIC_REQUIRE(to_string(errc::bad_json) == "not one complete JSON object");
 }

@@ -1,8 +1,14 @@
-// robowire/core/result.hpp - error codes and result<T>: no exceptions, no heap.
+// robowire/core/result.hpp - error codes and result<T>: no heap. Accessing
+// the wrong state throws robowire::bad_result_access when exceptions are
+// enabled; without exceptions it calls ROBOWIRE_BAD_RESULT_ACCESS_HANDLER
+// if defined, then traps.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#if defined(__cpp_exceptions)
+#include <exception>  // std::exception
+#endif
 #include <memory>  // std::construct_at
 #include <string_view>
 #include <type_traits>
@@ -30,6 +36,7 @@ enum class errc : std::uint8_t {
     capacity_exceeded,   // a fixed-capacity container is full
     bad_sequence,        // multi-frame: frame out of order
     command_changed,     // multi-frame: continuation frame with another command
+    bad_json,            // text is not one complete JSON object (unbalanced braces, open string)
 };
 
 // Short, stable, lower-case description of an error code.
@@ -53,21 +60,137 @@ constexpr std::string_view to_string(errc e) noexcept {
     case errc::capacity_exceeded: return "capacity exceeded";
     case errc::bad_sequence: return "frame out of sequence";
     case errc::command_changed: return "command changed inside a multi-frame message";
+    case errc::bad_json: return "not one complete JSON object";
     }
     return "unknown error";
 }
 
-// An error code and the byte offset it refers to.
+// An error code and the byte offset it refers to. Converts to true when it
+// is an error (like std::error_code): `if (auto e = decode_into(m, bytes)) ...`.
 struct error {
     errc code = errc::ok;
     std::size_t offset = 0;
+    constexpr explicit operator bool() const noexcept { return code != errc::ok; }
     friend constexpr bool operator==(const error&, const error&) = default;
 };
 
+}  // namespace robowire
+
+// Without exceptions, value(), operator* and operator-> of a result holding
+// an error (and error() of one holding a value, with errc::ok) call the
+// function named by ROBOWIRE_BAD_RESULT_ACCESS_HANDLER, if defined, then
+// trap. Define it for every translation unit (-DROBOWIRE_BAD_RESULT_ACCESS_HANDLER=on_bad_access)
+// and define that function once, at global scope:
+//   void on_bad_access(robowire::error e) noexcept { log(e); reset(); }   // must not return
+// No handler: trap. A macro, not a settable pointer, so that the library has no static data.
+#if defined(ROBOWIRE_BAD_RESULT_ACCESS_HANDLER) && !defined(__cpp_exceptions)
+void ROBOWIRE_BAD_RESULT_ACCESS_HANDLER(robowire::error) noexcept;
+#endif
+
+namespace robowire {
+
+#if defined(__cpp_exceptions)
+// Thrown by value(), operator* and operator-> of a result holding an error
+// (and by error() of one holding a value: code() is errc::ok). what() names
+// the error code and the byte offset; the text lives in the exception (no heap).
+class bad_result_access : public std::exception {
+public:
+    explicit bad_result_access(robowire::error e) noexcept : error_(e) {
+        std::size_t n = 0;
+        const auto put = [&](std::string_view s) {
+            for (char c : s)
+                if (n + 1 < sizeof what_) what_[n++] = c;
+        };
+        if (e.code == errc::ok) {
+            put("robowire: error() of a result that holds a value");
+        } else {
+            put("robowire: value() of a result that holds an error: ");
+            put(to_string(e.code));
+            put(" at byte ");
+            char digits[20] = {};
+            std::size_t d = 0;
+            std::size_t v = e.offset;
+            do { digits[d++] = static_cast<char>('0' + v % 10); v /= 10; } while (v != 0 && d < sizeof digits);
+            while (d > 0) put({&digits[--d], 1});
+        }
+        what_[n] = '\0';
+    }
+    const char* what() const noexcept override { return what_; }
+    robowire::error error() const noexcept { return error_; }
+    errc code() const noexcept { return error_.code; }
+
+private:
+    robowire::error error_;
+    char what_[144] = {};  // longest text: 51 + 48 + 9 + 20 digits
+};
+#endif
+
 namespace detail {
-// Called when a result is accessed in the wrong state. Not constexpr: such an
-// access inside a constant expression is a compile error; at run time it traps.
-[[noreturn]] inline void bad_result_access() noexcept { __builtin_trap(); }
+#if defined(__cpp_exceptions)
+inline constexpr bool access_noexcept = false;
+#else
+inline constexpr bool access_noexcept = true;
+#endif
+
+// Not constexpr: a wrong access inside a constant expression (e.g. .value()
+// of a constexpr encode given an out-of-range value) stops the compiler at
+// the call of the function named for the error.
+inline void result_holds_error_too_short() noexcept {}
+inline void result_holds_error_too_long() noexcept {}
+inline void result_holds_error_bad_length() noexcept {}
+inline void result_holds_error_bad_header() noexcept {}
+inline void result_holds_error_bad_trailer() noexcept {}
+inline void result_holds_error_bad_command() noexcept {}
+inline void result_holds_error_bad_device() noexcept {}
+inline void result_holds_error_unknown_message() noexcept {}
+inline void result_holds_error_value_out_of_range() noexcept {}
+inline void result_holds_error_invalid_enum() noexcept {}
+inline void result_holds_error_bad_padding() noexcept {}
+inline void result_holds_error_reserved_not_zero() noexcept {}
+inline void result_holds_error_missing_field() noexcept {}
+inline void result_holds_error_buffer_too_small() noexcept {}
+inline void result_holds_error_capacity_exceeded() noexcept {}
+inline void result_holds_error_bad_sequence() noexcept {}
+inline void result_holds_error_command_changed() noexcept {}
+inline void result_holds_error_bad_json() noexcept {}
+inline void result_holds_value_not_error() noexcept {}
+constexpr void compile_time_bad_access(errc code) noexcept {
+    switch (code) {
+    case errc::ok: result_holds_value_not_error(); break;
+    case errc::too_short: result_holds_error_too_short(); break;
+    case errc::too_long: result_holds_error_too_long(); break;
+    case errc::bad_length: result_holds_error_bad_length(); break;
+    case errc::bad_header: result_holds_error_bad_header(); break;
+    case errc::bad_trailer: result_holds_error_bad_trailer(); break;
+    case errc::bad_command: result_holds_error_bad_command(); break;
+    case errc::bad_device: result_holds_error_bad_device(); break;
+    case errc::unknown_message: result_holds_error_unknown_message(); break;
+    case errc::value_out_of_range: result_holds_error_value_out_of_range(); break;
+    case errc::invalid_enum: result_holds_error_invalid_enum(); break;
+    case errc::bad_padding: result_holds_error_bad_padding(); break;
+    case errc::reserved_not_zero: result_holds_error_reserved_not_zero(); break;
+    case errc::missing_field: result_holds_error_missing_field(); break;
+    case errc::buffer_too_small: result_holds_error_buffer_too_small(); break;
+    case errc::capacity_exceeded: result_holds_error_capacity_exceeded(); break;
+    case errc::bad_sequence: result_holds_error_bad_sequence(); break;
+    case errc::command_changed: result_holds_error_command_changed(); break;
+    case errc::bad_json: result_holds_error_bad_json(); break;
+    }
+}
+
+// Run-time reaction to a wrong access: throw, or the handler, or trap.
+[[noreturn]] inline void bad_result_access(error e) noexcept(access_noexcept) {
+#if defined(__cpp_exceptions)
+    throw robowire::bad_result_access(e);
+#else
+#if defined(ROBOWIRE_BAD_RESULT_ACCESS_HANDLER)
+    ::ROBOWIRE_BAD_RESULT_ACCESS_HANDLER(e);
+#else
+    (void)e;
+#endif
+    __builtin_trap();
+#endif
+}
 // Does nothing; not constexpr, so that compilers do not fold an in-place
 // result into a constant that they then write out as a block clear.
 inline void run_time_only() noexcept {}
@@ -100,26 +223,31 @@ public:
     constexpr bool has_value() const noexcept { return ok_; }
     constexpr explicit operator bool() const noexcept { return ok_; }
 
-    constexpr T& value() & noexcept { check(true); return value_.v; }
-    constexpr const T& value() const& noexcept { check(true); return value_.v; }
+    // The value. On an error: bad_result_access (exceptions enabled), else
+    // ROBOWIRE_BAD_RESULT_ACCESS_HANDLER and a trap; in a constant expression, a compile error.
+    constexpr T& value() & noexcept(detail::access_noexcept) { check(true); return value_.v; }
+    constexpr const T& value() const& noexcept(detail::access_noexcept) { check(true); return value_.v; }
     // From a temporary: the value itself, so `for (auto& x : make().value())` does not dangle.
-    constexpr T value() && noexcept { check(true); return value_.v; }
-    constexpr T& operator*() & noexcept { return value(); }
-    constexpr const T& operator*() const& noexcept { return value(); }
-    constexpr T operator*() && noexcept { return std::move(*this).value(); }
-    constexpr T* operator->() noexcept { return &value(); }
-    constexpr const T* operator->() const noexcept { return &value(); }
+    constexpr T value() && noexcept(detail::access_noexcept) { check(true); return value_.v; }
+    constexpr T& operator*() & noexcept(detail::access_noexcept) { return value(); }
+    constexpr const T& operator*() const& noexcept(detail::access_noexcept) { return value(); }
+    constexpr T operator*() && noexcept(detail::access_noexcept) { return std::move(*this).value(); }
+    constexpr T* operator->() noexcept(detail::access_noexcept) { return &value(); }
+    constexpr const T* operator->() const noexcept(detail::access_noexcept) { return &value(); }
 
-    // The error; only valid when !has_value().
-    constexpr robowire::error error() const noexcept { check(false); return error_; }
+    // The error; only valid when !has_value() (else as value() on an error, with errc::ok).
+    constexpr robowire::error error() const noexcept(detail::access_noexcept) { check(false); return error_; }
     constexpr errc code() const noexcept { return ok_ ? errc::ok : error_.code; }
 
     template <class U>
     constexpr T value_or(U&& fallback) const& { return ok_ ? value_.v : static_cast<T>(std::forward<U>(fallback)); }
 
 private:
-    constexpr void check(bool want_value) const noexcept {
-        if (ok_ != want_value) detail::bad_result_access();
+    constexpr void check(bool want_value) const noexcept(detail::access_noexcept) {
+        if (ok_ == want_value) return;
+        const robowire::error e = ok_ ? robowire::error{} : error_;
+        if (std::is_constant_evaluated()) detail::compile_time_bad_access(e.code);
+        detail::bad_result_access(e);
     }
     struct holder {  // default-initialises its value (value-initialising would clear it first)
         T v;

@@ -81,11 +81,55 @@ constexpr result<text_fragmenter> json_frames(std::string_view text) noexcept {
     return text_fragmenter::make(command::json, {text.data(), text.size()});
 }
 
+// Checks that `text` is one complete JSON object: optional white space, an
+// object whose braces and brackets balance and whose strings are closed,
+// then only white space. Returns the text, or bad_json with the offset of the
+// first character that breaks the rule (text.size() when the text ends too
+// early). A structural check, not a full JSON parser: what it accepts still
+// needs a parser; what it rejects is surely not one whole message.
+constexpr result<std::string_view> json_object(std::string_view text) noexcept {
+    constexpr auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+    std::size_t i = 0;
+    while (i < text.size() && space(text[i])) ++i;
+    if (i == text.size() || text[i] != '{') return fail(errc::bad_json, i);
+    std::array<char, 64> open{};  // closers expected, innermost last
+    std::size_t depth = 0;
+    bool in_string = false;
+    for (; i < text.size(); ++i) {
+        const char c = text[i];
+        if (in_string) {
+            if (c == '\\') ++i;  // the escaped character cannot close the string
+            else if (c == '"') in_string = false;
+            else if (static_cast<unsigned char>(c) < 0x20) return fail(errc::bad_json, i);  // raw control character
+            continue;
+        }
+        if (c == '"') {
+            in_string = true;
+        } else if (c == '{' || c == '[') {
+            if (depth == open.size()) return fail(errc::bad_json, i);  // nested deeper than 64
+            open[depth++] = c == '{' ? '}' : ']';
+        } else if (c == '}' || c == ']') {
+            if (depth == 0 || open[depth - 1] != c) return fail(errc::bad_json, i);
+            if (--depth == 0) break;
+        }
+    }
+    if (depth != 0 || i >= text.size()) return fail(errc::bad_json, text.size());  // ends inside the object
+    for (std::size_t k = i + 1; k < text.size(); ++k)
+        if (!space(text[k])) return fail(errc::bad_json, k);  // more after the object
+    return text;
+}
+
 // What reassembler::push says about a frame.
 enum class reassembly : std::uint8_t {
-    need_more,  // part of a message; more frames to come
-    complete,   // the message is complete: command(), payload(), text()
-    discarded,  // dropped: part of a message already broken by an error
+    need_more,   // part of a message; more frames to come
+    complete,    // the message is complete: command(), payload(), text(), json()
+    single,      // a one-frame message of another command arrived while a message is in
+                 // progress: it is a whole message, read it from the frame you pushed;
+                 // the message in progress is kept
+    duplicate,   // an exact repeat of the last frame of a multi-frame message: ignored
+    restarted,   // the sender started the message over (same command, `remaining` higher
+                 // than expected): the partial message was dropped, this frame begins the new one
+    discarded,   // dropped: part of a message already broken by an error
 };
 
 // Collects the frames of one message at a time, up to Capacity payload
@@ -93,13 +137,19 @@ enum class reassembly : std::uint8_t {
 //
 // push() errors, each with the frame byte it is about:
 //  - bad_header, too_short, too_long: not a frame; the state does not change.
-//  - command_changed (2): a continuation frame carries another command.
-//  - bad_sequence (3): `remaining` did not go down by one (a frame was lost
-//    or the sender started over).
-//  - capacity_exceeded (5): the message is longer than Capacity.
-// After one of the last three, the partial message is dropped, and so are
-// the frames after it up to the end of the broken message (the next frame
-// with remaining 0; push says `discarded`); then a new message starts.
+//  - bad_sequence (3): `remaining` went down by more than one (frames lost).
+//  - capacity_exceeded (3): the message (this frame's `remaining` + 1 frames)
+//    is longer than Capacity.
+//  - command_changed (2): a frame of another command with `remaining` > 0
+//    (another multi-frame message) arrived mid-message; this frame starts
+//    a new message.
+// After an error the partial message is dropped, and every later frame of
+// the broken message (its command, up to the frame with remaining 0) is
+// `discarded`; frames of other commands are taken as usual meanwhile.
+//
+// A receiver cannot tell a message's first frame from a later one: if it
+// starts listening mid-message, the tail comes out `complete`. json()
+// rejects such a tail (not one whole JSON object).
 template <std::size_t Capacity>
 class reassembler {
 public:
@@ -110,21 +160,38 @@ public:
     }
 
     constexpr result<reassembly> push(const frame& f) noexcept {
-        switch (state_) {
-        case state::complete: clear(); [[fallthrough]];
-        case state::idle:
-            command_ = f.command;
+        if (has_last_ && f == last_) return reassembly::duplicate;  // a completed message stays readable
+        if (state_ == state::complete) {
+            state_ = state::idle;
             size_ = 0;
-            return append(f);
-        case state::discarding:
-            if (f.remaining == 0) clear();
-            return reassembly::discarded;
-        case state::collecting:
-            if (f.command != command_) return drop(f, errc::command_changed, 2);
-            if (f.remaining + 1 != last_remaining_) return drop(f, errc::bad_sequence, 3);
-            return append(f);
         }
-        return reassembly::discarded;
+        if (skipping_ && f.command == skip_command_) {
+            if (f.remaining == 0) skipping_ = false;
+            remember(f);  // so that a repeat of it is not taken for a new message
+            return reassembly::discarded;
+        }
+        if (state_ == state::idle) return start(f);
+        // collecting
+        if (f.command != command_) {
+            if (f.remaining == 0) return reassembly::single;
+            const auto broken = command_;
+            const auto st = start(f);
+            if (!st) return st;
+            skip(broken);  // the rest of the broken message
+            return fail(errc::command_changed, 2);
+        }
+        if (f.remaining >= last_remaining_) {  // the sender started over
+            const auto st = start(f);
+            if (!st) return st;
+            return reassembly::restarted;
+        }
+        if (f.remaining + 1 != last_remaining_) {  // frames lost
+            drop();
+            remember(f);
+            if (f.remaining != 0) skip(f.command);
+            return fail(errc::bad_sequence, 3);
+        }
+        return append(f);
     }
 
     // The completed message (valid after push returned `complete`, until the next push).
@@ -137,35 +204,69 @@ public:
         while (n > 0 && buf_[n - 1] == 0) --n;
         return {reinterpret_cast<const char*>(buf_.data()), n};  // char may view any object's bytes
     }
+    // The completed message's text if it is one whole JSON object (see
+    // json_object), else bad_json; too_short while no message is complete.
+    result<std::string_view> json() const noexcept {
+        if (state_ != state::complete) return fail(errc::too_short, size_);
+        return json_object(text());
+    }
     constexpr bool in_progress() const noexcept { return state_ == state::collecting; }
     static constexpr std::size_t capacity() noexcept { return Capacity; }
-    // Drops any partial message.
+    // Forgets everything: partial message, the message being discarded, the last frame.
     constexpr void clear() noexcept {
-        state_ = state::idle;
-        size_ = 0;
+        drop();
+        has_last_ = false;
+        skipping_ = false;
     }
 
 private:
-    enum class state : std::uint8_t { idle, collecting, complete, discarding };
+    enum class state : std::uint8_t { idle, collecting, complete };
 
+    // The first frame of a message (the partial one, if any, is dropped).
+    constexpr result<reassembly> start(const frame& f) noexcept {
+        drop();
+        command_ = f.command;
+        if ((std::size_t{f.remaining} + 1) > Capacity / payload_size) {
+            has_last_ = false;
+            if (f.remaining != 0) {
+                remember(f);
+                skip(f.command);
+            }
+            return fail(errc::capacity_exceeded, 3);
+        }
+        return append(f);
+    }
     constexpr result<reassembly> append(const frame& f) noexcept {
-        if (Capacity - size_ < payload_size) return drop(f, errc::capacity_exceeded, 5);
         for (std::size_t i = 0; i < payload_size; ++i) buf_[size_ + i] = f.payload[i];
         size_ += payload_size;
+        // repeats are recognised for frames of multi-frame messages only: a
+        // one-frame message sent twice (e.g. the same maneuver) is two messages
+        if (f.remaining != 0 || size_ > payload_size) remember(f);
         last_remaining_ = f.remaining;
         state_ = f.remaining == 0 ? state::complete : state::collecting;
         return f.remaining == 0 ? reassembly::complete : reassembly::need_more;
     }
-    constexpr result<reassembly> drop(const frame& f, errc code, std::size_t offset) noexcept {
+    constexpr void drop() noexcept {
+        state_ = state::idle;
         size_ = 0;
-        state_ = f.remaining == 0 ? state::idle : state::discarding;
-        return fail(code, offset);
+    }
+    constexpr void remember(const frame& f) noexcept {
+        has_last_ = true;
+        last_ = f;
+    }
+    constexpr void skip(std::uint8_t command) noexcept {
+        skipping_ = true;
+        skip_command_ = command;
     }
 
     std::array<std::uint8_t, Capacity> buf_{};
     std::size_t size_ = 0;
+    frame last_{};                     // the last frame seen of a multi-frame message (if has_last_)
     std::uint8_t last_remaining_ = 0;  // `remaining` of the last frame taken
     std::uint8_t command_ = 0;
+    std::uint8_t skip_command_ = 0;    // command of the broken message being discarded
+    bool skipping_ = false;
+    bool has_last_ = false;
     state state_ = state::idle;
 };
 

@@ -1,0 +1,166 @@
+// robowire/core/fields.hpp - field helpers driven by a message's table:
+// a checked setter from a wider integer, and the field behind an error's
+// byte offset (name, bytes, valid range) for messages and logs.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <string_view>
+#include <type_traits>
+#include <utility>  // std::cmp_less, std::cmp_greater
+
+#include "result.hpp"
+#include "table.hpp"
+
+namespace robowire {
+
+// What a message's table says about one of its fields.
+struct field_info {
+    std::string_view message{};  // the table's name, e.g. "maneuver"
+    std::string_view name{};     // the field's name, e.g. "pitch"; empty: no field there
+    std::size_t offset = 0;      // first byte of the field in the encoding
+    std::size_t size = 0;        // bytes it occupies (all elements of an array)
+    range valid{0, 0};           // valid raw values, inclusive (scalars; enums: see is_enum)
+    bool is_enum = false;        // valid values are the enumeration's codes, not a range
+    std::string_view unit{};     // physical unit of the field ("" if none)
+    constexpr explicit operator bool() const noexcept { return !name.empty(); }
+};
+
+namespace detail {
+template <class M, class F>
+constexpr field_info info_of(const F& f) noexcept {
+    return {table_v<M>.name, f.name, f.offset, f.size, f.valid, F::is_enum, f.unit.name};
+}
+}  // namespace detail
+
+// The field of M whose bytes include `offset` (an error's offset points
+// into the field it is about). No field there (a fixed or reserved byte,
+// or past the end): name is empty and the info is false.
+template <described M>
+[[nodiscard]] constexpr field_info field_at(std::size_t offset) noexcept {
+    field_info out{};
+    out.message = table_v<M>.name;
+    for_each_field<M>([&](const auto& f) {
+        const bool inside = f.size == 0 ? offset == f.offset : offset >= f.offset && offset < f.end();
+        if (out.name.empty() && inside) out = detail::info_of<M>(f);
+    });
+    return out;
+}
+template <described M>
+[[nodiscard]] constexpr field_info field_at(const error& e) noexcept {
+    return field_at<M>(e.offset);
+}
+
+namespace detail {
+template <class P> struct member_pointer_traits;
+template <class M, class T> struct member_pointer_traits<T M::*> {
+    using message = M;
+    using member = T;
+};
+}  // namespace detail
+
+// The field of its message's table that stores member `Member`, e.g.
+// field_of<&navbot::maneuver::pitch>() (name "pitch", valid -100..100).
+template <auto Member>
+[[nodiscard]] constexpr field_info field_of() noexcept {
+    using M = typename detail::member_pointer_traits<decltype(Member)>::message;
+    field_info out{};
+    out.message = table_v<M>.name;
+    for_each_field<M>([&](const auto& f) {
+        if constexpr (std::is_same_v<decltype(f.member), decltype(Member)>)
+            if (out.name.empty() && f.member == Member) out = detail::info_of<M>(f);
+    });
+    return out;
+}
+
+// Sets message member `Member` from any integer after checking it against
+// the field's valid range in M's table (enums: against the enumeration's
+// codes). Out of range: value_out_of_range (enums: invalid_enum) at the
+// field's offset, and the message is not changed; field_at<M>(e) names the
+// field and its range.
+//
+//   int speed = 200;
+//   if (auto e = robowire::set_field<&navbot::maneuver::pitch>(m, speed)) ...  // -100..100: refused
+//
+// Scalar and enum members only (not arrays, text or optional blocks).
+template <auto Member, class M, class V>
+    requires std::is_integral_v<V> && (!std::is_same_v<V, bool>)
+[[nodiscard]] constexpr error set_field(M& m, V value) noexcept {
+    using traits = detail::member_pointer_traits<decltype(Member)>;
+    using T = typename traits::member;
+    static_assert(std::is_same_v<typename traits::message, M>, "set_field: the member belongs to another message");
+    static_assert(std::is_integral_v<T> || std::is_enum_v<T>, "set_field: scalar or enum members only");
+    error out{errc::unknown_message, 0};  // member not in the table (cannot happen for a described member)
+    bool found = false;
+    for_each_field<M>([&](const auto& f) {
+        if constexpr (std::is_same_v<decltype(f.member), decltype(Member)>) {
+            if (found || f.member != Member) return;
+            found = true;
+            if constexpr (std::is_enum_v<T>) {
+                using U = std::underlying_type_t<T>;
+                if (std::cmp_less(value, std::numeric_limits<U>::min()) ||
+                    std::cmp_greater(value, std::numeric_limits<U>::max()) ||
+                    !is_valid_enum(static_cast<T>(static_cast<U>(value)))) {
+                    out = fail(errc::invalid_enum, f.offset);
+                    return;
+                }
+                m.*Member = static_cast<T>(static_cast<U>(value));
+            } else {
+                if (std::cmp_less(value, f.valid.min) || std::cmp_greater(value, f.valid.max) ||
+                    !std::in_range<T>(value)) {
+                    out = fail(errc::value_out_of_range, f.offset);
+                    return;
+                }
+                m.*Member = static_cast<T>(value);
+            }
+            out = error{};
+        }
+    });
+    return out;
+}
+
+// Writes "message.field: <error> (valid min..max) at byte N" (or without
+// the field part when no field is at the offset) into `buf`, cut to fit;
+// returns the text written. For logs; no heap.
+template <described M>
+constexpr std::string_view describe_error(const error& e, std::span<char> buf) noexcept {
+    std::size_t n = 0;
+    const auto put = [&](std::string_view s) {
+        for (char c : s)
+            if (n < buf.size()) buf[n++] = c;
+    };
+    const auto put_int = [&](std::int64_t v) {
+        if (v < 0) put("-");
+        std::uint64_t u = v < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
+        char digits[20] = {};
+        std::size_t d = 0;
+        do { digits[d++] = static_cast<char>('0' + u % 10); u /= 10; } while (u != 0);
+        while (d > 0) put({&digits[--d], 1});
+    };
+    const field_info f = field_at<M>(e);
+    put(f.message);
+    if (f) {
+        put(".");
+        put(f.name);
+    }
+    put(": ");
+    put(to_string(e.code));
+    if (f && !f.is_enum && (e.code == errc::value_out_of_range)) {
+        put(" (valid ");
+        put_int(f.valid.min);
+        put("..");
+        put_int(f.valid.max);
+        if (!f.unit.empty()) {
+            put(" ");
+            put(f.unit);
+        }
+        put(")");
+    }
+    put(" at byte ");
+    put_int(static_cast<std::int64_t>(e.offset));
+    return {buf.data(), n};
+}
+
+}  // namespace robowire

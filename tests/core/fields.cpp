@@ -1,0 +1,72 @@
+#include <robowire/core/fields.hpp>
+#include <robowire/navbot/maneuver.hpp>
+
+#include <array>
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <string_view>
+
+using namespace robowire;
+namespace nb = robowire::navbot;
+
+namespace {
+// set_field at compile time: the error and the pitch afterwards.
+constexpr std::pair<error, int> set_pitch(long long v) {
+    nb::maneuver m{};
+    m.pitch = 5;
+    const error e = set_field<&nb::maneuver::pitch>(m, v);
+    return {e, m.pitch};
+}
+constexpr std::string_view describe(const error& e, std::array<char, 96>& buf) {
+    return describe_error<nb::maneuver>(e, buf);
+}
+}  // namespace
+
+TEST_CASE("set_field checks a wider integer against the field's range", "[core][fields]") {
+    // pitch: byte index 7, -100..100 (docs/navbot.md's table)
+    STATIC_REQUIRE(set_pitch(200) == std::pair<error, int>{error{errc::value_out_of_range, 7}, 5});  // 200 would wrap to -56
+    STATIC_REQUIRE(set_pitch(-101) == std::pair<error, int>{error{errc::value_out_of_range, 7}, 5});
+    STATIC_REQUIRE(set_pitch(-100) == std::pair<error, int>{error{}, -100});
+    STATIC_REQUIRE(set_pitch(100) == std::pair<error, int>{error{}, 100});
+    STATIC_REQUIRE(set_pitch(4294967296LL + 10) == std::pair<error, int>{error{errc::value_out_of_range, 7}, 5});
+    nb::maneuver m{};
+    CHECK(set_field<&nb::maneuver::height>(m, 100u) == error{});
+    CHECK(m.height == 100);
+    CHECK(set_field<&nb::maneuver::height>(m, -1) == error{errc::value_out_of_range, 6});
+    CHECK(set_field<&nb::maneuver::height>(m, std::uint64_t{0xFFFFFFFFFFFFFFFF}) == error{errc::value_out_of_range, 6});
+    CHECK(m.height == 100);
+    CHECK(set_field<&nb::maneuver::ball_x>(m, 6) == error{errc::value_out_of_range, 13});
+    // enums: only the enumeration's codes (switch_a: 0, 1, 2)
+    CHECK(set_field<&nb::maneuver::switch_a>(m, 2) == error{});
+    CHECK(m.switch_a == nb::switch_a::start_touch_panel);
+    CHECK(set_field<&nb::maneuver::switch_a>(m, 3) == error{errc::invalid_enum, 9});
+    CHECK(set_field<&nb::maneuver::switch_a>(m, 258) == error{errc::invalid_enum, 9});  // not 258 % 256 = 2
+    CHECK(m.switch_a == nb::switch_a::start_touch_panel);
+}
+
+TEST_CASE("field_at and field_of name the field behind an offset", "[core][fields]") {
+    STATIC_REQUIRE(field_at<nb::maneuver>(7).name == "pitch");
+    STATIC_REQUIRE(field_at<nb::maneuver>(7).valid.min == -100);
+    STATIC_REQUIRE(field_at<nb::maneuver>(7).valid.max == 100);
+    STATIC_REQUIRE(field_at<nb::maneuver>(6).name == "height");
+    STATIC_REQUIRE(field_at<nb::maneuver>(6).unit == "%");
+    STATIC_REQUIRE(field_at<nb::maneuver>(9).is_enum);
+    STATIC_REQUIRE(field_at<nb::maneuver>(error{errc::value_out_of_range, 14}).name == "ball_y");
+    STATIC_REQUIRE(!field_at<nb::maneuver>(0));   // header byte
+    STATIC_REQUIRE(!field_at<nb::maneuver>(16));  // reserved byte
+    STATIC_REQUIRE(!field_at<nb::maneuver>(99));
+    STATIC_REQUIRE(field_at<nb::maneuver>(0).message == "maneuver");
+    STATIC_REQUIRE(field_of<&nb::maneuver::yaw>().offset == 8);
+    STATIC_REQUIRE(field_of<&nb::maneuver::yaw>().size == 1);
+    STATIC_REQUIRE(field_of<&nb::maneuver::ball_x>().valid.max == 5);
+}
+
+TEST_CASE("describe_error writes the field, its range and the offset", "[core][fields]") {
+    std::array<char, 96> buf{};
+    CHECK(describe(error{errc::value_out_of_range, 7}, buf) ==
+          "maneuver.pitch: value out of range (valid -100..100 %) at byte 7");
+    CHECK(describe(error{errc::invalid_enum, 9}, buf) == "maneuver.switch_a: value is not a valid code at byte 9");
+    CHECK(describe(error{errc::bad_header, 1}, buf) == "maneuver: bad header byte at byte 1");
+    std::array<char, 10> small{};
+    CHECK(describe_error<nb::maneuver>(error{errc::value_out_of_range, 7}, small) == "maneuver.p");  // cut to fit
+}

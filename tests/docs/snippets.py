@@ -1,0 +1,111 @@
+#!/usr/bin/env python3
+"""Compiles every ```cpp block of README.md and docs/*.md with each compiler given
+(default: g++ and clang++) under the project's strict warning set.
+
+A block with its own main() is compiled as it is. Any other block is a
+fragment: it goes into a function body after a prelude that includes robowire
+and declares the application's own functions and buffers the fragments use
+(send, write, adv_bytes, ...). Fragments show values a program would go on to
+use, so unused variables are not errors there; every other warning is.
+
+Usage: snippets.py [--list] [compiler...]   (run from anywhere)
+"""
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+STRICT = ["-std=c++20", "-Wall", "-Wextra", "-Wpedantic", "-Wconversion", "-Wsign-conversion",
+          "-Wshadow", "-Werror"]
+FRAGMENT_ONLY = ["-Wno-unused-variable", "-Wno-unused-but-set-variable"]
+
+PRELUDE = r"""
+#include <robowire/robowire.hpp>
+#include <robowire/core/fields.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <span>
+#include <string_view>
+#include <variant>
+#include <unistd.h>  // read, write on a file descriptor
+
+using std::printf;
+// What the fragments assume the application provides.
+template <std::size_t N> void send(const robowire::bytes<N>& frame);          // BLE write
+template <std::size_t N> void write(const robowire::bytes<N>& frame);         // BLE write
+void handle_json(std::string_view text);
+extern std::span<const std::uint8_t> adv_bytes, scan_response_bytes, notification_bytes, rx_bytes;
+extern int fd;                                                                // a serial port
+std::uint16_t read_soc();
+std::int16_t read_centivolts();
+void uart_write(const std::uint8_t* data, std::size_t size);
+"""
+
+
+def blocks(path):
+    """(line number, code) of each ```cpp block of a Markdown file."""
+    out, code, start = [], None, 0
+    with open(path, encoding="utf-8") as f:
+        for n, line in enumerate(f, 1):
+            if code is None and line.strip() == "```cpp":
+                code, start = [], n + 1
+            elif code is not None and line.strip() == "```":
+                out.append((start, "".join(code)))
+                code = None
+            elif code is not None:
+                code.append(line)
+    return out
+
+
+def sources():
+    files = [os.path.join(ROOT, "README.md")]
+    docs = os.path.join(ROOT, "docs")
+    files += sorted(os.path.join(docs, f) for f in os.listdir(docs) if f.endswith(".md"))
+    for path in files:
+        for line, code in blocks(path):
+            yield os.path.relpath(path, ROOT), line, code
+
+
+def translation_unit(rel, line, code):
+    if re.search(r"\bint\s+main\s*\(", code):
+        return f'#line {line} "{rel}"\n{code}', False
+    return f'{PRELUDE}\nvoid snippet() {{\n#line {line} "{rel}"\n{code}}}\n', True
+
+
+def main(argv):
+    listing = "--list" in argv
+    compilers = [a for a in argv if a != "--list"] or ["g++", "clang++"]
+    snippets = list(sources())
+    if listing:
+        for rel, line, _ in snippets:
+            print(f"{rel}:{line}")
+        return 0
+    if not snippets:
+        print("no ```cpp blocks found")
+        return 1
+    failures = 0
+    with tempfile.TemporaryDirectory() as tmp:
+        for i, (rel, line, code) in enumerate(snippets):
+            tu, fragment = translation_unit(rel, line, code)
+            src = os.path.join(tmp, f"snippet{i}.cpp")
+            with open(src, "w", encoding="utf-8") as f:
+                f.write(tu)
+            for cxx in compilers:
+                cmd = [cxx, *STRICT, *(FRAGMENT_ONLY if fragment else []), "-I", os.path.join(ROOT, "include"),
+                       "-c", src, "-o", os.devnull]
+                r = subprocess.run(cmd, capture_output=True, text=True)
+                status = "ok" if r.returncode == 0 else "FAILED"
+                print(f"{status:6} {cxx:8} {rel}:{line}")
+                if r.returncode != 0:
+                    failures += 1
+                    print(r.stderr[:4000])
+    print(f"{len(snippets)} snippets, {len(compilers)} compilers, {failures} failures")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
