@@ -5,3 +5,4 @@
 #include "osp/frame.hpp"
 #include "osp/messages.hpp"
 #include "osp/scanner.hpp"
+#include "osp/units.hpp"

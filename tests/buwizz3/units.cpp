@@ -61,3 +61,40 @@ TEST_CASE("buwizz3: the document's PID presets", "[buwizz3][units]") {
     STATIC_REQUIRE(generic_pid_preset(2, port_function::pu_speed_servo).lim_out == 127);
     CHECK(robowire::encode(generic_pid_preset(3, port_function::pu_position_servo)).has_value());
 }
+
+TEST_CASE("buwizz3: status units in integers", "[buwizz3][units]") {
+    // battery: 9 V + raw x 0.05 V
+    STATIC_REQUIRE(battery_millivolts(std::uint8_t{0}) == 9000);
+    STATIC_REQUIRE(battery_millivolts(std::uint8_t{80}) == 13000);
+    STATIC_REQUIRE(battery_millivolts(std::uint8_t{127}) == 15350);  // the document's top of range
+    STATIC_REQUIRE(battery_millivolts(std::uint8_t{255}) == 21750);
+    // motor current: raw x 0.015 A
+    STATIC_REQUIRE(motor_milliamps(std::uint8_t{1}) == 15);
+    STATIC_REQUIRE(motor_milliamps(std::uint8_t{200}) == 3000);
+    STATIC_REQUIRE(motor_milliamps(std::uint8_t{255}) == 3825);
+    // acceleration: the 16-bit word x 0.488 mg = x 488 ug; one 12-bit count (16) is 7.808 mg
+    STATIC_REQUIRE(accel_micro_g(16) == 7808);
+    STATIC_REQUIRE(accel_micro_g(-16) == -7808);
+    STATIC_REQUIRE(accel_micro_g(0x7FF0) == 15982976);  // 32752 x 488
+    STATIC_REQUIRE(accel_micro_g(-32768) == -15990784);
+    STATIC_REQUIRE(accel_micro_g(2049) == 999912);  // about 1 g
+    STATIC_REQUIRE(accel_milli_g_rounded(2049) == 1000);
+    STATIC_REQUIRE(accel_milli_g_rounded(16) == 8);    // 7.808
+    STATIC_REQUIRE(accel_milli_g_rounded(-16) == -8);  // -7.808
+    STATIC_REQUIRE(accel_milli_g_rounded(1) == 0);     // 0.488
+    STATIC_REQUIRE(accel_milli_g_rounded(-1) == 0);    // -0.488
+    STATIC_REQUIRE(accel_milli_g_rounded(2) == 1);     // 0.976
+    STATIC_REQUIRE(accel_milli_g_rounded(-32768) == -15991);  // -15990.784
+    STATIC_REQUIRE(accel_milli_g_rounded(32767) == 15990);    // 15990.296
+    // from a status report
+    constexpr status s = [] {
+        status st{};
+        st.battery_voltage_raw = 80;
+        st.motor_current_raw = {0, 0, 0, 0, 0, 200};
+        return st;
+    }();
+    STATIC_REQUIRE(battery_millivolts(s) == 13000);
+    STATIC_REQUIRE(motor_milliamps(s, 5) == 3000);
+    STATIC_REQUIRE(motor_milliamps(s, 0) == 0);
+    CHECK(battery_millivolts(std::uint8_t{127}) == Approx(battery_volts(std::uint8_t{127}) * 1000));
+}

@@ -82,10 +82,32 @@ constexpr set_pid_parameters generic_pid_preset(std::uint8_t port, port_function
     return {port, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 127.0f, 0.0f, 127, 0, 0, mode};
 }
 
-// Status report units.
+// Status report units (double; battery_volts(raw) etc. are in status.hpp).
 constexpr double battery_volts(const status& s) noexcept { return battery_volts(s.battery_voltage_raw); }
 constexpr double motor_amps(const status& s, std::size_t port_index) noexcept {
     return motor_amps(s.motor_current_raw[port_index]);
+}
+
+// Status report units in integers, for cores without an FPU (no floating
+// point is used, so no soft-float routine is linked).
+// Battery voltage in millivolts: 9000 + raw x 50 (9000..21750; the device reports up to 15350).
+constexpr std::uint16_t battery_millivolts(std::uint8_t raw) noexcept {
+    return static_cast<std::uint16_t>(9000u + raw * 50u);
+}
+// Motor current in milliamps: raw x 15 (0..3825).
+constexpr std::uint16_t motor_milliamps(std::uint8_t raw) noexcept { return static_cast<std::uint16_t>(raw * 15u); }
+// Acceleration in micro-g: word x 488 (the 16-bit word, not the 12-bit count;
+// -15990784..15990296).
+constexpr std::int32_t accel_micro_g(std::int16_t word) noexcept { return std::int32_t{word} * 488; }
+// Acceleration in whole milli-g: word x 0.488 rounded half away from zero (-15991..15990).
+constexpr std::int16_t accel_milli_g_rounded(std::int16_t word) noexcept {
+    const std::int32_t ug = accel_micro_g(word);
+    return static_cast<std::int16_t>((ug < 0 ? ug - 500 : ug + 500) / 1000);
+}
+constexpr std::uint16_t battery_millivolts(const status& s) noexcept { return battery_millivolts(s.battery_voltage_raw); }
+// port_index: 0..5 (ports 1-6).
+constexpr std::uint16_t motor_milliamps(const status& s, std::size_t port_index) noexcept {
+    return motor_milliamps(s.motor_current_raw[port_index]);
 }
 
 }  // namespace robowire::buwizz3

@@ -18,3 +18,16 @@
 #else
 #define ROBOWIRE_ALWAYS_INLINE inline
 #endif
+
+// ROBOWIRE_ARRAY_LOOPS: 1 codes an array field (decode, encode) as one copy of
+// the element's code in a loop, 0 as one copy per element. Default 1 only when
+// optimizing for size for a core without unaligned loads (Cortex-M0/M0+), where
+// it saves flash; elsewhere the unrolled form is smaller or faster. Define it
+// to choose.
+#ifndef ROBOWIRE_ARRAY_LOOPS
+#if defined(__OPTIMIZE_SIZE__) && defined(__arm__) && !defined(__ARM_FEATURE_UNALIGNED)
+#define ROBOWIRE_ARRAY_LOOPS 1
+#else
+#define ROBOWIRE_ARRAY_LOOPS 0
+#endif
+#endif

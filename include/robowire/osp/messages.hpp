@@ -1,4 +1,4 @@
-// robowire/osp/messages.hpp - every OSP message, one table each, and unit helpers.
+// robowire/osp/messages.hpp - every OSP message, one table each (unit helpers: osp/units.hpp).
 // Reserved parameter bytes are sent as 0 and ignored on receive;
 // robowire::check_reserved<M>(bytes) reports them for a strict receiver.
 #pragma once
@@ -38,7 +38,8 @@ constexpr auto table_of(std::type_identity<device_type>) {
 }  // namespace generic
 
 namespace arm1 {
-// ARM1_CMD_SET_ANGLE, DEV 0x01 CMD 0x02. P1: joint; P2-P3: angle (u16le, raw; see angle_to_radians).
+// ARM1_CMD_SET_ANGLE, DEV 0x01 CMD 0x02. P1: joint; P2-P3: angle (u16le, raw; the published
+// ORM arm firmware reads it as signed 16-bit; see units.hpp).
 struct set_angle {
     std::uint8_t joint = 0;
     std::uint16_t angle = 0;
@@ -49,15 +50,6 @@ constexpr auto table_of(std::type_identity<set_angle>) {
                                  field{"angle", &set_angle::angle, 5, wire::u16le{}, unit{"rad", std::numbers::pi / 16384.0}});
 }
 
-// The document gives the angle no unit; the published firmware reads 16384 = pi radians.
-// Radians for a raw angle (0 .. 65535 -> 0 .. ~4 pi).
-constexpr double angle_to_radians(std::uint16_t raw) noexcept { return raw * (std::numbers::pi / 16384.0); }
-// Raw angle for `radians` (0 .. 65535 * pi / 16384), rounded; value_out_of_range outside.
-constexpr result<std::uint16_t> angle_from_radians(double radians) noexcept {
-    const double raw = radians * (16384.0 / std::numbers::pi);
-    if (!(raw >= -0.5 && raw < 65535.5)) return fail(errc::value_out_of_range, 5);
-    return static_cast<std::uint16_t>(raw + 0.5);
-}
 }  // namespace arm1
 
 namespace obp1 {
@@ -85,12 +77,14 @@ constexpr auto table_of(std::type_identity<request_status>) {
     return make_table<request_status>("request_status", impl::fixed(0x02, 0x04));
 }
 
-// OBP_INFO_SOC, CMD 0x11. State of charge, 0 = 0 %, 65535 = 100 %.
+// OBP_INFO_SOC, CMD 0x11. State of charge, 0 = 0 %, 65535 = 100 % (the published
+// OBP-1 firmware sends 10000 = 100 %: units.hpp, scale::published_firmware).
 struct soc {
     std::uint16_t soc_raw = 0;
     friend constexpr bool operator==(const soc&, const soc&) = default;
 };
-// OBP_INFO_VOLTAGE, CMD 0x12. Volts x 100 (-32768 = -327.68 V, 32767 = 327.67 V).
+// OBP_INFO_VOLTAGE, CMD 0x12. Volts x 100 (-32768 = -327.68 V, 32767 = 327.67 V); the
+// published OBP-1 firmware sends millivolts (units.hpp, scale::published_firmware).
 struct voltage {
     std::int16_t centivolts = 0;
     friend constexpr bool operator==(const voltage&, const voltage&) = default;
@@ -151,19 +145,6 @@ constexpr auto flag_bits_of(std::type_identity<status>) {
                                     {"flags", 1, 1, "high_voltage", {}},
                                     {"flags", 2, 1, "overheat", {}},
                                     {"flags", 3, 1, "short_circuit", {}}}};
-}
-
-// Unit helpers.
-constexpr double soc_percent(std::uint16_t soc_raw) noexcept { return soc_raw * (100.0 / 65535.0); }
-constexpr double volts(std::int16_t centivolts) noexcept { return centivolts / 100.0; }
-constexpr double amps(std::int16_t milliamps) noexcept { return milliamps / 1000.0; }
-constexpr double soc_percent(const soc& m) noexcept { return soc_percent(m.soc_raw); }
-constexpr double volts(const voltage& m) noexcept { return volts(m.centivolts); }
-constexpr double amps(const current& m) noexcept { return amps(m.milliamps); }
-// Raw SOC for a percentage 0..100 (rounded); value_out_of_range outside.
-constexpr result<std::uint16_t> soc_from_percent(double percent) noexcept {
-    if (!(percent >= 0.0 && percent <= 100.0)) return fail(errc::value_out_of_range, 4);
-    return static_cast<std::uint16_t>(percent * 655.35 + 0.5);
 }
 }  // namespace obp1
 

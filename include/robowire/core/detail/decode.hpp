@@ -33,6 +33,18 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::u
 template <class M, std::size_t I, std::size_t Off, class V, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_array(V& v, std::span<const std::uint8_t> in, error& err,
                                                    std::index_sequence<K...>) noexcept {
+    if constexpr (ROBOWIRE_ARRAY_LOOPS && sizeof...(K) >= 2) {
+        if (!std::is_constant_evaluated()) {  // element k decoded from the input shifted by k elements
+            constexpr std::size_t es = field_t<M, I>::element_size;
+            for (std::size_t k = 0; k < sizeof...(K); ++k) {
+                if (!decode_element<M, I, Off>(v[k], in.subspan(k * es), err)) {
+                    err.offset += k * es;
+                    return false;
+                }
+            }
+            return true;
+        }
+    }
     return (decode_element<M, I, Off + K * field_t<M, I>::element_size>(v[K], in, err) && ...);
 }
 

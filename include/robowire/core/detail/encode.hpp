@@ -32,6 +32,18 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(const M& m, error& err, std::
 
 template <class M, std::size_t I, std::size_t Off, class V, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr bool check_array(const V& v, error& err, std::index_sequence<K...>) noexcept {
+    if constexpr (ROBOWIRE_ARRAY_LOOPS && sizeof...(K) >= 2) {
+        if (!std::is_constant_evaluated()) {
+            constexpr std::size_t es = field_t<M, I>::element_size;
+            for (std::size_t k = 0; k < sizeof...(K); ++k) {
+                if (!check_element<M, I, Off>(v[k], err)) {
+                    err.offset += k * es;
+                    return false;
+                }
+            }
+            return true;
+        }
+    }
     return (check_element<M, I, Off + K * field_t<M, I>::element_size>(v[K], err) && ...);
 }
 
@@ -92,6 +104,13 @@ ROBOWIRE_ALWAYS_INLINE constexpr void store_record(const M& m, std::span<std::ui
 template <class M, std::size_t I, std::size_t Off, class V, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr void store_array(const V& v, std::span<std::uint8_t> out,
                                                   std::index_sequence<K...>) noexcept {
+    if constexpr (ROBOWIRE_ARRAY_LOOPS && sizeof...(K) >= 2) {
+        if (!std::is_constant_evaluated()) {  // element k written to the output shifted by k elements
+            constexpr std::size_t es = field_t<M, I>::element_size;
+            for (std::size_t k = 0; k < sizeof...(K); ++k) store_element<M, I, Off>(v[k], out.subspan(k * es));
+            return;
+        }
+    }
     (store_element<M, I, Off + K * field_t<M, I>::element_size>(v[K], out), ...);
 }
 

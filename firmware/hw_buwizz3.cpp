@@ -1,0 +1,295 @@
+// Hand-written baseline for buwizz3.cpp: every command decoded and encoded,
+// every notification decoded, the 0x31 drive command built from values.
+#include "handwritten.hpp"
+
+namespace {
+struct command {
+    std::uint8_t kind;  // the command byte
+    std::uint8_t size;  // 0x36: 1, 13 or 17
+    union {
+        char name[12];
+        struct { std::uint8_t enabled; std::uint32_t idle, sleep; } wakeup;
+        float factors[6];
+        struct { std::int8_t power[6]; std::uint8_t brake, lut; } motor;
+        struct { std::int32_t ref[4]; std::int8_t power[2]; std::uint8_t brake, lut; } motor_ext;
+        std::uint8_t one;  // 0x32, 0x34, 0x35, 0x37, 0x51
+        std::uint8_t ramps[12];
+        std::uint8_t led[16];
+        std::uint8_t limits[6];
+        struct { std::uint8_t channel; std::uint32_t baud; } uart;
+        std::uint8_t functions[4];
+        std::int32_t reference[4];
+        struct { std::uint8_t port; float f[8]; std::int8_t lim_out, db, boost; std::uint8_t mode; } pid;
+    };
+};
+bool valid_function(std::uint8_t f) { return f == 0 || f == 0x10 || (f >= 0x14 && f <= 0x16); }
+bool valid_lpf(std::uint8_t v) { return v <= 3 || (v >= 8 && v <= 11); }
+// The wire length of each command (0: unknown; 0x36 has three).
+std::size_t wire_size(std::uint8_t c) {
+    switch (c) {
+    case 0x20: return 13; case 0x21: return 10; case 0x22: return 25;
+    case 0x23: case 0xA1: case 0xAC: case 0x36: return 1;
+    case 0x30: return 9; case 0x31: return 21; case 0x33: return 13; case 0x38: return 7; case 0x40: return 7;
+    case 0x32: case 0x34: case 0x35: case 0x37: case 0x51: return 2;
+    case 0x50: return 5; case 0x52: return 17; case 0x53: return 38;
+    default: return 0;
+    }
+}
+hw::error check_power(const std::int8_t* p, std::size_t n, std::size_t at) {
+    for (std::size_t i = 0; i < n; ++i)
+        if (p[i] == -128) return hw::fail(hw::value_out_of_range, at + i);
+    return hw::good;
+}
+hw::error check_flags(std::uint8_t brake, std::uint8_t lut, std::size_t at) {
+    if (brake & 0xC0) return hw::fail(hw::value_out_of_range, at);
+    if (lut & 0xC0) return hw::fail(hw::value_out_of_range, at + 1);
+    return hw::good;
+}
+
+HW_CODEC hw::error decode_command(const std::uint8_t* p, std::size_t n, command& c) {
+    if (n == 0) return hw::fail(hw::too_short, 0);
+    c.kind = p[0];
+    const std::size_t want = wire_size(p[0]);
+    if (want == 0) return hw::fail(hw::unknown_message, 0);
+    if (p[0] == 0x36) {
+        if (n != 1 && n != 13 && n != 17) return n > 17 ? hw::fail(hw::too_long, 17) : hw::fail(hw::bad_length, n);
+    } else if (auto e = hw::length(n, want); e.code) {
+        return e;
+    }
+    c.size = static_cast<std::uint8_t>(n);
+    switch (p[0]) {
+    case 0x20: {
+        std::size_t len = 0;
+        while (len < 12 && p[1 + len]) ++len;
+        for (std::size_t i = len; i < 12; ++i)
+            if (p[1 + i]) return hw::fail(hw::bad_padding, 1 + i);
+        std::memcpy(c.name, p + 1, 12);
+        return hw::good;
+    }
+    case 0x21:
+        if (p[1] > 1) return hw::fail(hw::value_out_of_range, 1);
+        c.wakeup = {p[1], hw::rd32(p + 2), hw::rd32(p + 6)};
+        return c.wakeup.idle >= 10 ? hw::good : hw::fail(hw::value_out_of_range, 2);
+    case 0x22:
+        for (std::size_t i = 0; i < 6; ++i) c.factors[i] = hw::rdf(p + 1 + 4 * i);
+        return hw::good;
+    case 0x23: case 0xA1: case 0xAC: return hw::good;
+    case 0x30:
+        std::memcpy(c.motor.power, p + 1, 6);
+        c.motor.brake = p[7];
+        c.motor.lut = p[8];
+        if (auto e = check_power(c.motor.power, 6, 1); e.code) return e;
+        return check_flags(p[7], p[8], 7);
+    case 0x31:
+        for (std::size_t i = 0; i < 4; ++i) c.motor_ext.ref[i] = static_cast<std::int32_t>(hw::rd32(p + 1 + 4 * i));
+        std::memcpy(c.motor_ext.power, p + 17, 2);
+        c.motor_ext.brake = p[19];
+        c.motor_ext.lut = p[20];
+        if (auto e = check_power(c.motor_ext.power, 2, 17); e.code) return e;
+        return check_flags(p[19], p[20], 19);
+    case 0x32: c.one = p[1]; return p[1] >= 20 ? hw::good : hw::fail(hw::value_out_of_range, 1);
+    case 0x33: std::memcpy(c.ramps, p + 1, 12); return hw::good;
+    case 0x34: c.one = p[1]; return p[1] != 255 ? hw::good : hw::fail(hw::value_out_of_range, 1);
+    case 0x35: c.one = p[1]; return hw::good;
+    case 0x36: std::memcpy(c.led, p + 1, n - 1); return hw::good;
+    case 0x37: c.one = p[1]; return valid_lpf(p[1]) ? hw::good : hw::fail(hw::invalid_enum, 1);
+    case 0x38: std::memcpy(c.limits, p + 1, 6); return hw::good;
+    case 0x40:
+        if (p[1] != 0x10) return hw::fail(hw::bad_command, 1);
+        c.uart = {p[2], hw::rd32(p + 3)};
+        return hw::good;
+    case 0x50:
+        for (std::size_t i = 0; i < 4; ++i) {
+            if (!valid_function(p[1 + i])) return hw::fail(hw::invalid_enum, 1 + i);
+            c.functions[i] = p[1 + i];
+        }
+        return hw::good;
+    case 0x51: c.one = p[1]; return p[1] <= 4 ? hw::good : hw::fail(hw::value_out_of_range, 1);
+    case 0x52:
+        for (std::size_t i = 0; i < 4; ++i) c.reference[i] = static_cast<std::int32_t>(hw::rd32(p + 1 + 4 * i));
+        return hw::good;
+    case 0x53:
+        if (p[1] > 3) return hw::fail(hw::value_out_of_range, 1);
+        c.pid.port = p[1];
+        for (std::size_t i = 0; i < 8; ++i) c.pid.f[i] = hw::rdf(p + 2 + 4 * i);
+        c.pid.lim_out = static_cast<std::int8_t>(p[34]);
+        c.pid.db = static_cast<std::int8_t>(p[35]);
+        c.pid.boost = static_cast<std::int8_t>(p[36]);
+        c.pid.mode = p[37];
+        if (c.pid.lim_out < 1) return hw::fail(hw::value_out_of_range, 34);
+        if (c.pid.db < 0) return hw::fail(hw::value_out_of_range, 35);
+        if (c.pid.boost < 0) return hw::fail(hw::value_out_of_range, 36);
+        return valid_function(p[37]) ? hw::good : hw::fail(hw::invalid_enum, 37);
+    default: return hw::fail(hw::unknown_message, 0);
+    }
+}
+
+// Encodes c into out (at least 38 bytes); checks every field first. Returns the length, 0 on error.
+HW_CODEC std::size_t encode_command(const command& c, std::uint8_t* out, hw::error& e) {
+    std::size_t n = c.kind == 0x36 ? c.size : wire_size(c.kind);
+    e = hw::good;
+    switch (c.kind) {
+    case 0x21:
+        if (c.wakeup.enabled > 1) e = hw::fail(hw::value_out_of_range, 1);
+        else if (c.wakeup.idle < 10) e = hw::fail(hw::value_out_of_range, 2);
+        break;
+    case 0x30: e = check_power(c.motor.power, 6, 1); if (!e.code) e = check_flags(c.motor.brake, c.motor.lut, 7); break;
+    case 0x31: e = check_power(c.motor_ext.power, 2, 17); if (!e.code) e = check_flags(c.motor_ext.brake, c.motor_ext.lut, 19); break;
+    case 0x32: if (c.one < 20) e = hw::fail(hw::value_out_of_range, 1); break;
+    case 0x34: if (c.one == 255) e = hw::fail(hw::value_out_of_range, 1); break;
+    case 0x36: if (n != 1 && n != 13 && n != 17) e = hw::fail(hw::bad_length, n); break;
+    case 0x37: if (!valid_lpf(c.one)) e = hw::fail(hw::invalid_enum, 1); break;
+    case 0x50: for (std::size_t i = 0; i < 4 && !e.code; ++i) if (!valid_function(c.functions[i])) e = hw::fail(hw::invalid_enum, 1 + i); break;
+    case 0x51: if (c.one > 4) e = hw::fail(hw::value_out_of_range, 1); break;
+    case 0x53:
+        if (c.pid.port > 3) e = hw::fail(hw::value_out_of_range, 1);
+        else if (c.pid.lim_out < 1) e = hw::fail(hw::value_out_of_range, 34);
+        else if (c.pid.db < 0) e = hw::fail(hw::value_out_of_range, 35);
+        else if (c.pid.boost < 0) e = hw::fail(hw::value_out_of_range, 36);
+        else if (!valid_function(c.pid.mode)) e = hw::fail(hw::invalid_enum, 37);
+        break;
+    default: if (n == 0) e = hw::fail(hw::unknown_message, 0); break;
+    }
+    if (e.code) return 0;
+    out[0] = c.kind;
+    switch (c.kind) {
+    case 0x20: {
+        std::size_t len = 0;
+        while (len < 12 && c.name[len]) ++len;
+        std::memcpy(out + 1, c.name, len);
+        std::memset(out + 1 + len, 0, 12 - len);
+        break;
+    }
+    case 0x21: out[1] = c.wakeup.enabled; hw::wr32(out + 2, c.wakeup.idle); hw::wr32(out + 6, c.wakeup.sleep); break;
+    case 0x22: for (std::size_t i = 0; i < 6; ++i) hw::wrf(out + 1 + 4 * i, c.factors[i]); break;
+    case 0x30: std::memcpy(out + 1, c.motor.power, 6); out[7] = c.motor.brake; out[8] = c.motor.lut; break;
+    case 0x31:
+        for (std::size_t i = 0; i < 4; ++i) hw::wr32(out + 1 + 4 * i, static_cast<std::uint32_t>(c.motor_ext.ref[i]));
+        std::memcpy(out + 17, c.motor_ext.power, 2);
+        out[19] = c.motor_ext.brake;
+        out[20] = c.motor_ext.lut;
+        break;
+    case 0x32: case 0x34: case 0x35: case 0x37: case 0x51: out[1] = c.one; break;
+    case 0x33: std::memcpy(out + 1, c.ramps, 12); break;
+    case 0x36: std::memcpy(out + 1, c.led, n - 1); break;
+    case 0x38: std::memcpy(out + 1, c.limits, 6); break;
+    case 0x40: out[1] = 0x10; out[2] = c.uart.channel; hw::wr32(out + 3, c.uart.baud); break;
+    case 0x50: std::memcpy(out + 1, c.functions, 4); break;
+    case 0x52: for (std::size_t i = 0; i < 4; ++i) hw::wr32(out + 1 + 4 * i, static_cast<std::uint32_t>(c.reference[i])); break;
+    case 0x53:
+        out[1] = c.pid.port;
+        for (std::size_t i = 0; i < 8; ++i) hw::wrf(out + 2 + 4 * i, c.pid.f[i]);
+        out[34] = static_cast<std::uint8_t>(c.pid.lim_out);
+        out[35] = static_cast<std::uint8_t>(c.pid.db);
+        out[36] = static_cast<std::uint8_t>(c.pid.boost);
+        out[37] = c.pid.mode;
+        break;
+    default: break;
+    }
+    return n;
+}
+
+struct status {
+    std::uint8_t flags, battery, current[6], temperature;
+    std::int16_t accel[3];
+    std::uint8_t bl_command, bl_code, bl_data[3], charge;
+    struct { std::uint8_t type; std::int8_t velocity; std::int16_t absolute; std::int32_t position; } motors[4];
+    bool has_pid;
+    float process_value, error, output;
+    std::int8_t integrator, motor_output;
+    std::uint8_t ignored;
+};
+struct notification {
+    std::uint8_t kind;
+    union {
+        status s;
+        float factors[6];
+        struct { std::uint8_t n; std::uint8_t data[128]; } charger;
+    };
+};
+HW_CODEC hw::error decode_status(const std::uint8_t* p, std::size_t n, status& s) {
+    if (n < 54) return hw::fail(hw::too_short, n);
+    if (n > 129) return hw::fail(hw::too_long, 129);
+    if (n > 54 && n < 68) return hw::fail(hw::bad_length, n);
+    s.flags = p[1];
+    s.battery = p[2];
+    std::memcpy(s.current, p + 3, 6);
+    s.temperature = p[9];
+    for (std::size_t i = 0; i < 3; ++i) s.accel[i] = static_cast<std::int16_t>(hw::rd16(p + 10 + 2 * i));
+    s.bl_command = p[16];
+    s.bl_code = p[17];
+    std::memcpy(s.bl_data, p + 18, 3);
+    s.charge = p[21];
+    for (std::size_t i = 0; i < 4; ++i) {
+        const std::uint8_t* m = p + 22 + 8 * i;
+        s.motors[i] = {m[0], static_cast<std::int8_t>(m[1]), static_cast<std::int16_t>(hw::rd16(m + 2)),
+                       static_cast<std::int32_t>(hw::rd32(m + 4))};
+    }
+    s.has_pid = n >= 68;
+    if (s.has_pid) {
+        s.process_value = hw::rdf(p + 54);
+        s.error = hw::rdf(p + 58);
+        s.output = hw::rdf(p + 62);
+        s.integrator = static_cast<std::int8_t>(p[66]);
+        s.motor_output = static_cast<std::int8_t>(p[67]);
+    }
+    s.ignored = static_cast<std::uint8_t>(n > 68 ? n - 68 : 0);
+    return hw::good;
+}
+HW_CODEC hw::error decode_notification(const std::uint8_t* p, std::size_t n, notification& m) {
+    if (n == 0) return hw::fail(hw::too_short, 0);
+    m.kind = p[0];
+    switch (p[0]) {
+    case 0x01: return decode_status(p, n, m.s);
+    case 0x23:
+        if (auto e = hw::length(n, 25); e.code) return e;
+        for (std::size_t i = 0; i < 6; ++i) m.factors[i] = hw::rdf(p + 1 + 4 * i);
+        return hw::good;
+    case 0xAC:
+        if (n > 129) return hw::fail(hw::too_long, 129);
+        m.charger.n = static_cast<std::uint8_t>(n - 1);
+        std::memcpy(m.charger.data, p + 1, n - 1);
+        return hw::good;
+    default: return hw::fail(hw::unknown_message, 0);
+    }
+}
+}  // namespace
+
+ENTRY void hw_buwizz3_decode_command(const std::uint8_t* p, std::size_t n) {
+    command c;
+    const auto e = decode_command(p, n, c);
+    sink = e.code ? static_cast<std::uint32_t>(e.code) : c.kind;
+}
+ENTRY void hw_buwizz3_decode_notification(const std::uint8_t* p, std::size_t n) {
+    notification m;
+    const auto e = decode_notification(p, n, m);
+    sink = e.code ? static_cast<std::uint32_t>(e.code) : m.kind;
+}
+ENTRY void hw_buwizz3_encode_command(const std::uint8_t* p, std::size_t n) {
+    command c;
+    if (decode_command(p, n, c).code) return;
+    std::uint8_t out[38];
+    hw::error e;
+    if (const std::size_t k = encode_command(c, out, e)) hw::out(out, k);
+}
+ENTRY void hw_buwizz3_encode_drive(const std::uint8_t* b) {
+    command c;
+    c.kind = 0x31;
+    for (std::size_t i = 0; i < 4; ++i) c.motor_ext.ref[i] = static_cast<std::int32_t>(b[i] * 1000);
+    c.motor_ext.power[0] = static_cast<std::int8_t>(b[4] & 0x7F);
+    c.motor_ext.power[1] = static_cast<std::int8_t>(b[5] & 0x7F);
+    c.motor_ext.brake = c.motor_ext.lut = 0;
+    std::uint8_t out[38];
+    hw::error e;
+    if (const std::size_t k = encode_command(c, out, e)) hw::out(out, k);
+}
+
+int main() {
+    const auto in = read_input<160>();
+    const auto n = size_in(129);
+    hw_buwizz3_decode_command(in.data(), n);
+    hw_buwizz3_decode_notification(in.data(), n);
+    hw_buwizz3_encode_command(in.data(), n);
+    hw_buwizz3_encode_drive(in.data());
+    return 0;
+}

@@ -1,0 +1,155 @@
+// Hand-written baseline for navbot.cpp: maneuver encode/decode (both sign
+// encodings), frame dispatch, fragmenter and reassembler.
+#include "handwritten.hpp"
+
+namespace {
+struct maneuver {
+    std::int8_t roll;
+    std::uint8_t height;
+    std::int8_t pitch, yaw;
+    std::uint8_t switch_a, switch_b, switch_c, switch_d;
+    std::int8_t ball_x, ball_y;
+};
+struct frame {
+    std::uint8_t command, remaining;
+    std::uint8_t payload[15];
+};
+bool in(int v, int lo, int hi) { return v >= lo && v <= hi; }
+// Signed channels: byte offsets 5, 7, 8, 13, 14.
+bool is_signed(std::size_t i) { return i == 5 || i == 7 || i == 8 || i == 13 || i == 14; }
+
+hw::error check(const maneuver& m) {
+    if (!in(m.roll, -100, 100)) return hw::fail(hw::value_out_of_range, 5);
+    if (m.height > 100) return hw::fail(hw::value_out_of_range, 6);
+    if (!in(m.pitch, -100, 100)) return hw::fail(hw::value_out_of_range, 7);
+    if (!in(m.yaw, -100, 100)) return hw::fail(hw::value_out_of_range, 8);
+    if (m.switch_a > 2) return hw::fail(hw::invalid_enum, 9);
+    if (m.switch_b > 1) return hw::fail(hw::invalid_enum, 10);
+    if (m.switch_c > 1) return hw::fail(hw::invalid_enum, 11);
+    if (m.switch_d > 2) return hw::fail(hw::invalid_enum, 12);
+    if (!in(m.ball_x, -5, 5)) return hw::fail(hw::value_out_of_range, 13);
+    if (!in(m.ball_y, -5, 5)) return hw::fail(hw::value_out_of_range, 14);
+    return hw::good;
+}
+HW_CODEC hw::error encode(const maneuver& m, bool sign_magnitude, std::uint8_t* out) {
+    if (auto e = check(m); e.code) return e;
+    std::memset(out, 0, 20);
+    out[0] = 0x55; out[1] = 0xAA; out[2] = 0x10;
+    out[5] = static_cast<std::uint8_t>(m.roll);
+    out[6] = m.height;
+    out[7] = static_cast<std::uint8_t>(m.pitch);
+    out[8] = static_cast<std::uint8_t>(m.yaw);
+    out[9] = m.switch_a; out[10] = m.switch_b; out[11] = m.switch_c; out[12] = m.switch_d;
+    out[13] = static_cast<std::uint8_t>(m.ball_x);
+    out[14] = static_cast<std::uint8_t>(m.ball_y);
+    if (sign_magnitude)
+        for (std::size_t i = 5; i < 15; ++i)
+            if (is_signed(i) && (out[i] & 0x80)) out[i] = static_cast<std::uint8_t>(0x80 | (256 - out[i]));
+    return hw::good;
+}
+HW_CODEC hw::error decode_frame(const std::uint8_t* p, std::size_t n, frame& f) {
+    if (auto e = hw::length(n, 20); e.code) return e;
+    if (p[0] != 0x55) return hw::fail(hw::bad_header, 0);
+    if (p[1] != 0xAA) return hw::fail(hw::bad_header, 1);
+    f.command = p[2];
+    f.remaining = p[3];
+    std::memcpy(f.payload, p + 5, 15);
+    return hw::good;
+}
+HW_CODEC hw::error decode_maneuver(const std::uint8_t* p, std::size_t n, bool sign_magnitude, maneuver& m) {
+    frame f;
+    if (auto e = decode_frame(p, n, f); e.code) return e;
+    if (f.command != 0x10) return hw::fail(hw::bad_command, 2);
+    std::uint8_t b[15];
+    std::memcpy(b, f.payload, 15);
+    if (sign_magnitude)
+        for (std::size_t i = 5; i < 15; ++i)
+            if (is_signed(i) && (b[i - 5] & 0x80)) b[i - 5] = static_cast<std::uint8_t>(-(b[i - 5] & 0x7F));
+    m = {static_cast<std::int8_t>(b[0]), b[1], static_cast<std::int8_t>(b[2]), static_cast<std::int8_t>(b[3]),
+         b[4], b[5], b[6], b[7], static_cast<std::int8_t>(b[8]), static_cast<std::int8_t>(b[9])};
+    return check(m);
+}
+
+enum outcome : std::uint8_t { need_more, complete, discarded };
+struct reassembler {
+    std::uint8_t buf[120];
+    std::uint8_t size, last, command;
+    std::uint8_t state;  // 0 idle, 1 collecting, 2 complete, 3 discarding
+    hw::error drop(const frame& f, hw::err e, std::size_t at) {
+        size = 0;
+        state = f.remaining == 0 ? 0 : 3;
+        return hw::fail(e, at);
+    }
+    hw::error append(const frame& f, outcome& o) {
+        if (sizeof buf - size < 15) return drop(f, hw::capacity_exceeded, 5);
+        std::memcpy(buf + size, f.payload, 15);
+        size = static_cast<std::uint8_t>(size + 15);
+        last = f.remaining;
+        state = f.remaining == 0 ? 2 : 1;
+        o = f.remaining == 0 ? complete : need_more;
+        return hw::good;
+    }
+    HW_CODEC hw::error push(const std::uint8_t* p, std::size_t n, outcome& o) {
+        frame f;
+        if (auto e = decode_frame(p, n, f); e.code) return e;
+        switch (state) {
+        case 3:
+            if (f.remaining == 0) state = 0;
+            o = discarded;
+            return hw::good;
+        case 1:
+            if (f.command != command) return drop(f, hw::command_changed, 2);
+            if (f.remaining + 1 != last) return drop(f, hw::bad_sequence, 3);
+            return append(f, o);
+        default:
+            command = f.command;
+            size = 0;
+            return append(f, o);
+        }
+    }
+};
+}  // namespace
+
+ENTRY void hw_navbot_encode_maneuver(const std::uint8_t* b) {
+    maneuver m{};
+    m.pitch = static_cast<std::int8_t>(static_cast<std::int8_t>(b[0]) % 101);
+    m.yaw = static_cast<std::int8_t>(static_cast<std::int8_t>(b[1]) % 101);
+    m.switch_a = b[2] % 3;
+    std::uint8_t out[20];
+    if (encode(m, b[3] & 1, out).code == 0) hw::out(out, 20);
+}
+ENTRY void hw_navbot_decode_frame(const std::uint8_t* p, std::size_t n) {
+    frame f;
+    maneuver m;
+    auto e = decode_frame(p, n, f);
+    if (e.code == 0 && f.command == 0x10) e = decode_maneuver(p, n, false, m);
+    sink = e.code ? static_cast<std::uint32_t>(e.code) : f.command;
+    if (decode_maneuver(p, n, true, m).code == 0) sink = static_cast<std::uint32_t>(m.pitch);
+}
+reassembler reassembler_state;
+ENTRY void hw_navbot_reassemble(const std::uint8_t* p, std::size_t n) {
+    outcome o;
+    const auto e = reassembler_state.push(p, n, o);
+    if (e.code == 0 && o == complete) hw::out(reassembler_state.buf, reassembler_state.size);
+}
+ENTRY void hw_navbot_fragment(const std::uint8_t* payload, std::size_t n) {
+    const std::size_t frames = n == 0 ? 1 : (n + 14) / 15;
+    if (frames > 256) return;
+    for (std::size_t k = 0; k < frames; ++k) {
+        std::uint8_t f[20] = {0x55, 0xAA, 0x02, static_cast<std::uint8_t>(frames - 1 - k), 0};
+        const std::size_t m = n - 15 * k < 15 ? n - 15 * k : 15;
+        std::memcpy(f + 5, payload + 15 * k, m);
+        std::memset(f + 5 + m, 0, 15 - m);
+        hw::out(f, 20);
+    }
+}
+
+int main() {
+    const auto in = read_input<160>();
+    const auto n = size_in(40);
+    hw_navbot_encode_maneuver(in.data());
+    hw_navbot_decode_frame(in.data(), n);
+    hw_navbot_reassemble(in.data(), n);
+    hw_navbot_fragment(in.data(), size_in(120));
+    return 0;
+}
