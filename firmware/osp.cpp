@@ -9,21 +9,24 @@ ENTRY void osp_decode(std::span<const std::uint8_t> b) {
     const auto m = osp::decode(b);
     sink = m ? static_cast<std::uint32_t>(m->index()) : static_cast<std::uint32_t>(m.code());
 }
-ENTRY void osp_encode(std::size_t which, std::uint16_t value) {
+// Alternative `which` of the variant (the protocol's one list), its integer
+// and enum fields set from `value` (invalid codes too: encode rejects them).
+template <std::size_t... I>
+osp::message make_message(std::size_t which, std::uint16_t value, std::index_sequence<I...>) {
     osp::message m;
-    switch (which % 11) {
-    case 0: m = osp::generic::request_device_type{}; break;
-    case 1: m = osp::generic::device_type{static_cast<osp::device_type>(value & 3)}; break;
-    case 2: m = osp::arm1::set_angle{static_cast<std::uint8_t>(value), value}; break;
-    case 3: m = osp::obp1::request_soc{}; break;
-    case 4: m = osp::obp1::request_voltage{}; break;
-    case 5: m = osp::obp1::request_current{}; break;
-    case 6: m = osp::obp1::request_status{}; break;
-    case 7: m = osp::obp1::soc{value}; break;
-    case 8: m = osp::obp1::voltage{static_cast<std::int16_t>(value)}; break;
-    case 9: m = osp::obp1::current{static_cast<std::int16_t>(value)}; break;
-    default: m = osp::obp1::status{static_cast<osp::obp1::state>(value % 5), static_cast<std::uint8_t>(value)}; break;
-    }
+    ((which == I ? (void)m.emplace<I>() : void()), ...);
+    std::visit([value](auto& x) {
+        robowire::for_each_field<std::remove_cvref_t<decltype(x)>>([&](const auto& f) {
+            auto& member = x.*f.member;
+            using T = std::remove_cvref_t<decltype(member)>;
+            if constexpr (std::is_integral_v<T> || std::is_enum_v<T>) member = static_cast<T>(value);
+        });
+    }, m);
+    return m;
+}
+ENTRY void osp_encode(std::size_t which, std::uint16_t value) {
+    constexpr std::size_t n = std::variant_size_v<osp::message>;
+    const osp::message m = make_message(which % n, value, std::make_index_sequence<n>{});
     const auto r = osp::encode(m);
     if (r) out(*r);
 }

@@ -1,12 +1,15 @@
 // Proves that every encoder, decoder, dispatcher, scanner, fragmenter and
 // reassembler runs without allocating: global operator new/delete and malloc
 // are replaced by counting versions, and the program fails if any count moves
-// while robowire runs. Built as its own executable (see tests/CMakeLists.txt).
+// while robowire runs. Every message of every protocol's variant is encoded
+// and decoded. Built as its own executable (see tests/CMakeLists.txt).
 #include <robowire/robowire.hpp>
 
 #include <cstdio>
 #include <cstdlib>
 #include <new>
+
+#include "../each_message.hpp"
 
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmismatched-new-delete"  // replacement operators on malloc/free, on purpose
@@ -53,6 +56,14 @@ volatile std::uint8_t sink;
 void use(std::span<const std::uint8_t> b) {
     for (auto x : b) sink = x;
 }
+// fn(v) for every alternative of the protocol's variant, default-constructed and filled.
+template <class Variant, class Fn>
+void each(Fn&& fn) {
+    test::for_each_alternative<Variant>([&](auto index, auto m) {
+        fn(Variant{std::in_place_index<index()>, m});
+        fn(Variant{std::in_place_index<index()>, test::filled<decltype(m)>()});
+    });
+}
 }  // namespace
 
 int main() {
@@ -71,30 +82,21 @@ int main() {
     }
 
     no_alloc("buwizz3 commands", [] {
-        const bw::command all[] = {bw::set_device_name{"BW"}, bw::set_motion_wakeup{true, 300, 0},
-                                   bw::set_accel_calibration{}, bw::read_accel_calibration{},
-                                   bw::set_motor_data{{1, 2, 3, 4, 5, 6}, 1, 2}, bw::set_motor_data_extended{},
-                                   bw::set_data_period{20}, bw::set_ramp_rates{}, bw::set_motor_timeout{},
-                                   bw::activate_watchdog{}, bw::set_led_status{std::array<bw::rgb, 4>{}, std::array<bw::blink, 4>{}},
-                                   bw::set_accel_lpf{}, bw::set_current_limits{}, bw::set_uart_baudrate{},
-                                   bw::set_pu_port_function{}, bw::enable_pid_reporting{}, bw::set_servo_reference{},
-                                   bw::position_servo_preset(1), bw::activate_shelf_mode{}, bw::check_charger_settings{}};
-        for (const auto& m : all) {
+        each<bw::command>([](const bw::command& m) {
             const auto wire = robowire::encode(m).value();
             use(wire);
             const auto back = bw::decode_command(wire);
             sink = static_cast<std::uint8_t>(back.has_value());
-        }
+        });
         const std::uint8_t bad[] = {0x30, 0x80};
         sink = static_cast<std::uint8_t>(bw::decode_command(bad).code());
     });
     no_alloc("buwizz3 notifications", [] {
-        bw::status s{};
-        s.pid_state = bw::pid_state{1, 2, 3, 4, 5};
-        const auto wire = robowire::encode(s).value();
-        sink = static_cast<std::uint8_t>(bw::decode_notification(wire).has_value());
-        const auto cs = robowire::encode(bw::charger_settings{{1, 2, 3}}).value();
-        sink = static_cast<std::uint8_t>(bw::decode_notification(cs).has_value());
+        each<bw::notification>([](const bw::notification& m) {
+            const auto wire = robowire::encode(m).value();
+            use(wire);
+            sink = static_cast<std::uint8_t>(bw::decode_notification(wire).has_value());
+        });
         const std::uint8_t adv[] = {0x02, 0x01, 0x06, 0x09, 0xFF, 0x4E, 0x05, 0x42, 0x57, 0x03, 0x22, 0x34, 0x12};
         sink = static_cast<std::uint8_t>(bw::parse_advertisement(adv).has_value());
         sink = static_cast<std::uint8_t>(bw::k_lp_from_cutoff(10).has_value() + bw::ramp_rate_from_seconds(1).value());
@@ -105,7 +107,11 @@ int main() {
         const auto a = nb::encode(m).value();
         const auto b = nb::encode(m, nb::sign_encoding::sign_magnitude).value();
         sink = static_cast<std::uint8_t>(nb::decode_maneuver(a).has_value() + nb::decode_maneuver(b, nb::sign_encoding::sign_magnitude).has_value());
-        sink = static_cast<std::uint8_t>(nb::decode_frame(a).has_value());
+        each<nb::message>([](const nb::message& msg) {
+            const auto wire = robowire::encode(msg).value();
+            use(wire);
+            sink = static_cast<std::uint8_t>(nb::decode_frame(wire).has_value());
+        });
         nb::reassembler<60> r;
         for (const auto& f : nb::json_frames(R"({"type":"get_device_info"})").value()) sink = static_cast<std::uint8_t>(r.push(f).has_value());
         sink = static_cast<std::uint8_t>(r.text().size());
@@ -113,15 +119,12 @@ int main() {
         sink = static_cast<std::uint8_t>(nb::matches_advertisement(adv));
     });
     no_alloc("osp", [] {
-        const osp::message all[] = {osp::generic::request_device_type{}, osp::generic::device_type{osp::device_type::obp1},
-                                    osp::arm1::set_angle{1, 2}, osp::obp1::request_soc{}, osp::obp1::soc{1},
-                                    osp::obp1::voltage{2}, osp::obp1::current{3}, osp::obp1::status{}};
         osp::scanner sc;
-        for (const auto& m : all) {
+        each<osp::message>([&sc](const osp::message& m) {
             const auto wire = osp::encode(m).value();
             sc.feed(wire, [](osp::scanner::frame_bytes f) { sink = static_cast<std::uint8_t>(osp::decode(f).has_value()); });
             for (auto byte : wire) sink = static_cast<std::uint8_t>(sc.push(byte).has_value());
-        }
+        });
         struct battery {
             osp::obp1::soc operator()(const osp::obp1::request_soc&) const { return {100}; }
         };

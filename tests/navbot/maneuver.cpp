@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "check.hpp"
+#include "round_trips.hpp"
 
 using namespace robowire;
 using namespace robowire::navbot;
@@ -126,6 +127,12 @@ TEST_CASE("navbot: decode_frame dispatches", "[navbot]") {
     STATIC_REQUIRE(std::get<frame>(decode_frame(json).value()).payload[0] == '{');
     CHECK(decode_frame(test::hex("55 AA 10 00 00 00 00 00 00 09 00 00 00 00 00 00 00 00 00 00")).error() ==
           error{errc::invalid_enum, 9});
+}
+
+TEST_CASE("navbot: every message round trips through the variant", "[navbot]") {
+    STATIC_REQUIRE(std::variant_size_v<message> >= 2);
+    test::check_each_round_trips<message>([](const message& m) { return robowire::encode(m); },
+                                          [](std::span<const std::uint8_t> in) { return decode_frame(in); });
 }
 
 TEST_CASE("navbot: BLE constants and name matching", "[navbot]") {

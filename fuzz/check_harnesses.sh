@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Fails when fuzz/harnesses.txt and the harness sources disagree: every
+# fuzz/*.cpp that defines LLVMFuzzerTestOneInput is listed, every listed name has its
+# source, corpus folder and dictionary.
+cd "$(dirname "$0")"
+rc=0
+listed=$(grep -v '^[[:space:]]*\(#\|$\)' harnesses.txt)
+names=$(awk '{print $1}' <<<"$listed")
+for f in *.cpp; do
+  grep -q "LLVMFuzzerTestOneInput(.*) *{" "$f" || continue  # a harness defines it
+  grep -qx "${f%.cpp}" <<<"$names" || { echo "fuzz/harnesses.txt does not list ${f%.cpp}"; rc=1; }
+done
+while read -r name dict extra; do
+  [ -n "$dict" ] && [ -z "$extra" ] || { echo "fuzz/harnesses.txt: '$name $dict $extra': want <name> <dictionary>"; rc=1; continue; }
+  [ -f "$name.cpp" ] || { echo "fuzz/harnesses.txt lists $name but fuzz/$name.cpp does not exist"; rc=1; }
+  [ -d "corpus/$name" ] || { echo "fuzz/corpus/$name/ does not exist"; rc=1; }
+  [ -f "dict/$dict.dict" ] || { echo "$name: fuzz/dict/$dict.dict does not exist"; rc=1; }
+done <<<"$listed"
+[ "$(sort <<<"$names" | uniq -d)" = "" ] || { echo "fuzz/harnesses.txt lists a name twice"; rc=1; }
+exit $rc

@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Prints the unit test sources linked into robowire_tests, one per line,
+# relative to tests/: every tests/<folder>/*.cpp (main.cpp aside), except the
+# folders below, which hold programs or scripts of their own. Read by
+# tests/CMakeLists.txt and tests/meson.build, so a new test file or a new
+# protocol's test folder needs no list edited.
+cd "$(dirname "$0")" || exit 1
+not_unit=" alloc cli compile_fail consumer consumers docs handler wireshark "
+for f in */*.cpp; do
+  [ -e "$f" ] || continue
+  case "$not_unit" in *" ${f%%/*} "*) continue ;; esac
+  echo "$f"
+done
