@@ -16,6 +16,7 @@
 #include <type_traits>
 
 #include "config.hpp"
+#include "detail/check.hpp"
 #include "detail/field_list.hpp"
 #include "detail/traits.hpp"
 #include "result.hpp"
@@ -75,7 +76,7 @@ concept described = requires { table_of(std::type_identity<M>{}); };
 
 // The table of a message or record type.
 template <described M>
-inline constexpr auto table_v = table_of(std::type_identity<M>{});
+inline constexpr auto table_v = detail::checked_table(table_of(std::type_identity<M>{}));  // checked once, at compile time
 
 // One field: name, member, byte offset, wire type, valid raw range, unit.
 // The member may be a scalar, an enum, bool, text<N>, bytes<N> (tail), a

@@ -48,6 +48,15 @@ template <class M>
 constexpr std::uint16_t key_of() noexcept {
     return static_cast<std::uint16_t>(robowire::detail::key_of<M>(2) << 8 | robowire::detail::key_of<M>(3));
 }
+// Every alternative of Message has a DEV/CMD pair of its own.
+template <class Message, std::size_t... I>
+constexpr bool keys_distinct(std::index_sequence<I...>) noexcept {
+    constexpr std::uint16_t keys[] = {key_of<std::variant_alternative_t<I, Message>>()...};
+    for (std::size_t a = 0; a < sizeof...(I); ++a)
+        for (std::size_t b = a + 1; b < sizeof...(I); ++b)
+            if (keys[a] == keys[b]) return false;
+    return true;
+}
 // Fixed bytes checked by the frame already: makes the message and decodes its fields in place.
 template <std::size_t I>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_message(decode_result& d, std::span<const std::uint8_t> in) noexcept {
@@ -68,6 +77,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::uint1
 // (offset 2), and the message's own field errors.
 template <class Message>
 [[nodiscard]] constexpr decode_result decode(std::span<const std::uint8_t> in) noexcept {
+    static_assert(impl::keys_distinct<Message>(std::make_index_sequence<std::variant_size_v<Message>>{}),
+                  "osp::decode: two messages share a DEV/CMD pair (the second could never be decoded)");
     decode_result d{std::in_place};
     std::variant_alternative_t<0, std::variant<osp::frame, Message>> f{};
     if (const error e = robowire::decode_into(f, in); e.code != errc::ok) {
