@@ -84,8 +84,8 @@ TEST_CASE("table sizes come from the fields", "[core][table]") {
     STATIC_REQUIRE(max_size_v<msg> == 17);
     STATIC_REQUIRE(table_v<demo::pair>.max_size() == 3);
     STATIC_REQUIRE(table_v<msg>.field_count == 8);
-    STATIC_REQUIRE(std::get<2>(table_v<msg>.fields).count == 2);
-    STATIC_REQUIRE(std::get<2>(table_v<msg>.fields).size == 6);
+    STATIC_REQUIRE(table_v<msg>.fields.get<2>().count == 2);
+    STATIC_REQUIRE(table_v<msg>.fields.get<2>().size == 6);
 }
 
 TEST_CASE("table-driven decode", "[core][table]") {

@@ -21,12 +21,15 @@ using command = std::variant<set_device_name, set_motion_wakeup, set_accel_calib
 using notification = std::variant<status, accel_calibration, charger_settings>;
 
 // Decodes a packet written to the device; unknown_message (offset 0) for an unknown command byte.
-[[nodiscard]] constexpr result<command> decode_command(std::span<const std::uint8_t> in) noexcept {
-    return decode_variant<command, 0>(in);
+// (A template, so that nothing is instantiated in a translation unit that does not call it.)
+template <class Command = command>
+[[nodiscard]] constexpr result<Command> decode_command(std::span<const std::uint8_t> in) noexcept {
+    return decode_variant<Command, 0>(in);
 }
 // Decodes a notification from the device; unknown_message (offset 0) for an unknown command byte.
-[[nodiscard]] constexpr result<notification> decode_notification(std::span<const std::uint8_t> in) noexcept {
-    return decode_variant<notification, 0>(in);
+template <class Notification = notification>
+[[nodiscard]] constexpr result<Notification> decode_notification(std::span<const std::uint8_t> in) noexcept {
+    return decode_variant<Notification, 0>(in);
 }
 
 }  // namespace robowire::buwizz3

@@ -2,7 +2,6 @@
 // and hex formatting / parsing into caller-owned buffers.
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -33,6 +32,15 @@ constexpr void copy_small(std::uint8_t* to, const std::uint8_t* from, std::size_
     else if (n >= 4) pair(std::integral_constant<std::size_t, 4>{});
     else if (n >= 2) pair(std::integral_constant<std::size_t, 2>{});
     else if (n == 1) to[0] = from[0];
+}
+// n bytes at a and at b are equal (memcmp at run time, as std::equal does).
+constexpr bool same_bytes(const std::uint8_t* a, const std::uint8_t* b, std::size_t n) noexcept {
+    if (std::is_constant_evaluated()) {
+        for (std::size_t k = 0; k < n; ++k)
+            if (a[k] != b[k]) return false;
+        return true;
+    }
+    return n == 0 || std::memcmp(a, b, n) == 0;
 }
 }  // namespace detail
 
@@ -99,7 +107,7 @@ public:
     constexpr void clear() noexcept { resize(0); }
 
     friend constexpr bool operator==(const bytes& a, std::span<const std::uint8_t> b) noexcept {
-        return a.size_ == b.size() && std::equal(a.begin(), a.end(), b.begin());
+        return a.size_ == b.size() && detail::same_bytes(a.data(), b.data(), b.size());
     }
 
 private:
@@ -110,12 +118,12 @@ private:
 // Equal when sizes and used bytes are equal (capacities may differ).
 template <std::size_t N, std::size_t M>
 [[nodiscard]] constexpr bool operator==(const bytes<N>& a, const bytes<M>& b) noexcept {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
+    return a.size() == b.size() && detail::same_bytes(a.data(), b.data(), a.size());
 }
 
 // Equality of two byte spans.
 [[nodiscard]] constexpr bool equal_bytes(std::span<const std::uint8_t> a, std::span<const std::uint8_t> b) noexcept {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
+    return a.size() == b.size() && detail::same_bytes(a.data(), b.data(), a.size());
 }
 
 // Characters to_hex writes for n bytes (with a separator: 3n - 1, else 2n).

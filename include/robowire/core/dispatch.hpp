@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <variant>
 
 #include "config.hpp"
@@ -26,6 +27,10 @@ ROBOWIRE_ALWAYS_INLINE constexpr auto& emplace_alternative(Variant& v) noexcept 
     return *std::get_if<I>(&v);
 }
 
+// Not constexpr: reached at compile time, it is the compile error (two
+// alternatives of a variant have the same key: the second could never be decoded).
+inline void variant_alternatives_share_a_key(std::string_view /*first_alternative*/, int /*key*/) noexcept {}
+
 template <class M>
 constexpr int key_of(std::size_t key_offset) noexcept {  // -1: M has no fixed byte there
     for (const auto& b : table_v<M>.fixed)
@@ -45,7 +50,8 @@ inline constexpr auto key_index_v = [] {
     for (std::size_t i = 0; i < count; ++i) {
         if (keys[i] < 0) continue;
         auto& slot = index[static_cast<std::size_t>(keys[i])];
-        if (slot == count) slot = static_cast<std::uint8_t>(i);  // the first alternative with that key
+        if (slot != count) variant_alternatives_share_a_key(table_v<std::variant_alternative_t<0, Variant>>.name, keys[i]);
+        slot = static_cast<std::uint8_t>(i);
     }
     return index;
 }();
@@ -64,7 +70,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_index(result<Variant>& r, std::size
 }  // namespace detail
 
 // Decodes `in` as the alternative of Variant whose fixed byte at KeyOffset
-// matches (the first one, if several do); unknown_message (at KeyOffset) if
+// matches (alternatives sharing a key do not compile); unknown_message (at KeyOffset) if
 // none does, too_short if the input does not reach the key. The message is
 // decoded in place, without copies.
 template <class Variant, std::size_t KeyOffset = 0>

@@ -12,11 +12,12 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
-#include <tuple>
 #include <utility>
 #include <type_traits>
 
 #include "config.hpp"
+#include "detail/check.hpp"
+#include "detail/field_list.hpp"
 #include "detail/traits.hpp"
 #include "result.hpp"
 #include "wire.hpp"
@@ -75,7 +76,7 @@ concept described = requires { table_of(std::type_identity<M>{}); };
 
 // The table of a message or record type.
 template <described M>
-inline constexpr auto table_v = table_of(std::type_identity<M>{});
+inline constexpr auto table_v = detail::checked_table(table_of(std::type_identity<M>{}));  // checked once, at compile time
 
 // One field: name, member, byte offset, wire type, valid raw range, unit.
 // The member may be a scalar, an enum, bool, text<N>, bytes<N> (tail), a
@@ -118,7 +119,7 @@ struct message_table {
     using message_type = M;
     std::string_view name;
     std::array<fixed_byte, K> fixed;
-    std::tuple<F...> fields;
+    detail::field_list<F...> fields;  // fields.get<I>(), fields.each(fn)
     std::size_t declared_max_input = 0;  // longest accepted input; 0: max_size(). Longer is decoded, the rest ignored.
     std::size_t declared_size = 0;       // nonzero: the message is at least this long (reserved bytes after the last field)
 
@@ -129,7 +130,7 @@ struct message_table {
     constexpr std::size_t max_size() const noexcept {
         std::size_t e = declared_size;
         for (const auto& b : fixed) e = b.offset + 1 > e ? b.offset + 1 : e;
-        std::apply([&](const auto&... f) { ((e = f.end() > e ? f.end() : e), ...); }, fields);
+        fields.each([&](const auto& f) { e = f.end() > e ? f.end() : e; });
         return e;
     }
     // Shortest valid input: fixed bytes and every non-optional field.
@@ -140,7 +141,7 @@ struct message_table {
             const std::size_t end = f.kind == wire_kind::tail ? f.offset : f.end();
             if (!f.is_optional && end > e) e = end;
         };
-        std::apply([&](const auto&... f) { (req(f), ...); }, fields);
+        fields.each(req);
         return e;
     }
     // Longest accepted input (longer than max_size(): the rest is ignored).
@@ -150,18 +151,18 @@ struct message_table {
 // Builds a message table: name, fixed bytes, fields in offset order.
 template <class M, std::size_t K, class... F>
 constexpr auto make_table(std::string_view name, const fixed_byte (&fixed)[K], F... fields) noexcept {
-    message_table<M, K, F...> t{name, {}, std::tuple<F...>{fields...}};
+    message_table<M, K, F...> t{name, {}, detail::field_list<F...>{fields...}};
     for (std::size_t i = 0; i < K; ++i) t.fixed[i] = fixed[i];
     return t;
 }
 template <class M, std::size_t K, class... F>
 constexpr auto make_table(std::string_view name, const std::array<fixed_byte, K>& fixed, F... fields) noexcept {
-    return message_table<M, K, F...>{name, fixed, std::tuple<F...>{fields...}};
+    return message_table<M, K, F...>{name, fixed, detail::field_list<F...>{fields...}};
 }
 // Builds a record table (a struct nested in messages; no fixed bytes).
 template <class M, class... F>
 constexpr auto make_record(std::string_view name, F... fields) noexcept {
-    return message_table<M, 0, F...>{name, {}, std::tuple<F...>{fields...}};
+    return message_table<M, 0, F...>{name, {}, detail::field_list<F...>{fields...}};
 }
 
 // Size limits of a message's encoding.
@@ -171,7 +172,7 @@ template <described M> inline constexpr std::size_t max_size_v = table_v<M>.max_
 // Calls fn(field) for each field of M's table, in table order.
 template <class M, class Fn>
 constexpr void for_each_field(Fn&& fn) {
-    std::apply([&](const auto&... f) { (fn(f), ...); }, table_v<M>.fields);
+    table_v<M>.fields.each(fn);
 }
 
 // Bytes of M's encoding that no fixed byte and no field covers (reserved bytes).

@@ -15,15 +15,19 @@ using message = std::variant<maneuver, frame>;
 
 // Decodes one 20-byte frame. Signed maneuver channels: two's complement.
 // Length errors: too_short / too_long (length_error_text explains them).
-[[nodiscard]] constexpr result<message> decode_frame(std::span<const std::uint8_t> in) noexcept {
-    const auto f = robowire::decode<frame>(in);
+// (A template, so that nothing is instantiated in a translation unit that does not call it.)
+template <class Message = message>
+[[nodiscard]] constexpr result<Message> decode_frame(std::span<const std::uint8_t> in) noexcept {
+    using maneuver_t = std::variant_alternative_t<0, Message>;
+    using frame_t = std::variant_alternative_t<1, Message>;
+    const auto f = robowire::decode<frame_t>(in);
     if (!f) return f.error();
     if (f->command == command::maneuver) {
-        const auto m = robowire::decode<maneuver>(in);
+        const auto m = robowire::decode<maneuver_t>(in);
         if (!m) return m.error();
-        return message{*m};
+        return Message{*m};
     }
-    return message{*f};
+    return Message{*f};
 }
 
 }  // namespace robowire::navbot

@@ -19,6 +19,12 @@ using message = std::variant<generic::request_device_type, generic::device_type,
                              obp1::request_voltage, obp1::request_current, obp1::request_status, obp1::soc,
                              obp1::voltage, obp1::current, obp1::status>;
 
+class decode_result;
+// Decodes one 10-byte frame (below). A template, so that nothing is
+// instantiated in a translation unit that does not call it.
+template <class Message = message>
+[[nodiscard]] constexpr decode_result decode(std::span<const std::uint8_t> in) noexcept;
+
 // The result of osp::decode: the message, or an error; frame() holds DEV,
 // CMD and P1..P4 whenever the markers and length were right, so an
 // unknown_message (or a bad field) still shows what came in.
@@ -31,6 +37,7 @@ public:
     constexpr const std::optional<osp::frame>& frame() const noexcept { return frame_; }
 
 private:
+    template <class Message>
     friend constexpr decode_result decode(std::span<const std::uint8_t> in) noexcept;
     std::optional<osp::frame> frame_;
 };
@@ -40,6 +47,15 @@ namespace impl {
 template <class M>
 constexpr std::uint16_t key_of() noexcept {
     return static_cast<std::uint16_t>(robowire::detail::key_of<M>(2) << 8 | robowire::detail::key_of<M>(3));
+}
+// Every alternative of Message has a DEV/CMD pair of its own.
+template <class Message, std::size_t... I>
+constexpr bool keys_distinct(std::index_sequence<I...>) noexcept {
+    constexpr std::uint16_t keys[] = {key_of<std::variant_alternative_t<I, Message>>()...};
+    for (std::size_t a = 0; a < sizeof...(I); ++a)
+        for (std::size_t b = a + 1; b < sizeof...(I); ++b)
+            if (keys[a] == keys[b]) return false;
+    return true;
 }
 // Fixed bytes checked by the frame already: makes the message and decodes its fields in place.
 template <std::size_t I>
@@ -59,22 +75,26 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::uint1
 // Decodes one 10-byte frame into whichever message its DEV and CMD name.
 // Errors: too_short / too_long, bad_header, bad_trailer, unknown_message
 // (offset 2), and the message's own field errors.
+template <class Message>
 [[nodiscard]] constexpr decode_result decode(std::span<const std::uint8_t> in) noexcept {
+    static_assert(impl::keys_distinct<Message>(std::make_index_sequence<std::variant_size_v<Message>>{}),
+                  "osp::decode: two messages share a DEV/CMD pair (the second could never be decoded)");
     decode_result d{std::in_place};
-    osp::frame f{};
+    std::variant_alternative_t<0, std::variant<osp::frame, Message>> f{};
     if (const error e = robowire::decode_into(f, in); e.code != errc::ok) {
         d = e;
         return d;
     }
     d.frame_ = f;
     impl::decode_by_key(d, static_cast<std::uint16_t>(f.device << 8 | f.command), in,
-                          std::make_index_sequence<std::variant_size_v<message>>{});
+                          std::make_index_sequence<std::variant_size_v<Message>>{});
     return d;
 }
 
 // Encodes any message of the variant. (Not the core encode(variant): that
 // copies into a second buffer, which costs Cortex-M code size and stack.)
-[[nodiscard]] constexpr result<bytes<frame_size>> encode(const message& m) noexcept {
+template <class Message = message>
+[[nodiscard]] constexpr result<bytes<frame_size>> encode(const std::type_identity_t<Message>& m) noexcept {
     return std::visit([](const auto& x) -> result<bytes<frame_size>> { return robowire::encode(x); }, m);
 }
 

@@ -4,7 +4,6 @@
 
 #include <cstddef>
 #include <limits>
-#include <tuple>
 #include <type_traits>
 
 #include "../table.hpp"
@@ -16,9 +15,9 @@ concept reports_trailing = requires(M m) { m.ignored_trailing_bytes = std::size_
 
 // Field I of M's table, as a compile-time constant.
 template <class M, std::size_t I>
-inline constexpr const auto& field_v = std::get<I>(table_v<M>.fields);
+inline constexpr const auto& field_v = table_v<M>.fields.template get<I>();
 template <class M>
-inline constexpr std::size_t field_count_v = std::tuple_size_v<std::remove_cvref_t<decltype(table_v<M>.fields)>>;
+inline constexpr std::size_t field_count_v = std::remove_cvref_t<decltype(table_v<M>.fields)>::size;
 template <class M, std::size_t I>
 using field_t = std::remove_cvref_t<decltype(field_v<M, I>)>;
 template <class M>

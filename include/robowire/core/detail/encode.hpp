@@ -8,7 +8,6 @@
 #include <cstring>
 #include <limits>
 #include <span>
-#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -222,8 +221,7 @@ constexpr std::array<bool, max_size_v<M>> cleared_bytes() noexcept {
             if constexpr (F::kind == wire_kind::bits) clear[base + f.offset + k * F::element_size] = true;
             else if constexpr (F::kind == wire_kind::record) {
                 using E = typename F::element_type;
-                std::apply([&](const auto&... g) { (self(self, g, base + f.offset + k * F::element_size), ...); },
-                           table_v<E>.fields);
+                table_v<E>.fields.each([&](const auto& g) { self(self, g, base + f.offset + k * F::element_size); });
             }
         }
     };

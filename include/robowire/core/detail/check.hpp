@@ -1,0 +1,58 @@
+// robowire/core/detail/check.hpp - internal: a table is checked once, when
+// it is built at compile time. A broken table fails to compile; the
+// compiler's message names the rule (one of the functions below), the
+// message type and, in the call it shows, the message and field names.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+#include <type_traits>
+
+#include "../bits.hpp"
+#include "../wire.hpp"
+
+namespace robowire::detail {
+
+// Not constexpr: reaching one of them while a table is checked at compile
+// time is the compile error. Each names what is wrong.
+inline void table_fields_out_of_offset_order(std::string_view /*message*/, std::string_view /*field*/) noexcept {}
+inline void table_fields_overlap(std::string_view /*message*/, std::string_view /*field*/) noexcept {}
+inline void table_field_beyond_message_size(std::string_view /*message*/, std::string_view /*field*/) noexcept {}
+inline void table_fixed_byte_beyond_message_size(std::string_view /*message*/, std::size_t /*offset*/) noexcept {}
+inline void table_fixed_byte_under_field(std::string_view /*message*/, std::string_view /*field*/) noexcept {}
+
+// Checks a message or record table; returns it unchanged.
+template <class Table>
+constexpr const Table& checked_table(const Table& t) noexcept {
+    std::size_t prev_offset = 0, end = 0;
+    std::size_t bits_byte = static_cast<std::size_t>(-1);
+    unsigned bits_used = 0;
+    // Declared sizes bound every field and fixed byte.
+    const std::size_t limit = t.declared_size ? t.declared_size : t.declared_max_input;
+    t.fields.each([&](const auto& f) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        if (f.offset < prev_offset) table_fields_out_of_offset_order(t.name, f.name);
+        unsigned mask = 0;
+        if constexpr (F::kind == wire_kind::bits && F::count == 1)
+            mask = static_cast<unsigned>(low_mask(F::wire_type::width) << F::wire_type::lo);
+        if (mask != 0 && f.offset == bits_byte) {  // bit fields sharing a byte: their bits must not overlap
+            if ((bits_used & mask) != 0) table_fields_overlap(t.name, f.name);
+            bits_used |= mask;
+        } else {
+            if (f.offset < end) table_fields_overlap(t.name, f.name);
+            bits_byte = mask != 0 ? f.offset : static_cast<std::size_t>(-1);
+            bits_used = mask;
+        }
+        if (limit != 0 && f.end() > limit) table_field_beyond_message_size(t.name, f.name);
+        for (const auto& b : t.fixed)
+            if (b.offset >= f.offset && b.offset < f.end()) table_fixed_byte_under_field(t.name, f.name);
+        prev_offset = f.offset;
+        if (f.end() > end) end = f.end();
+    });
+    for (const auto& b : t.fixed)
+        if (limit != 0 && b.offset >= limit) table_fixed_byte_beyond_message_size(t.name, b.offset);
+    return t;
+}
+
+}  // namespace robowire::detail
