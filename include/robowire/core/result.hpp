@@ -9,7 +9,7 @@
 #if defined(__cpp_exceptions)
 #include <exception>  // std::exception
 #endif
-#include <memory>  // std::construct_at
+#include <new>  // placement new
 #include <string_view>
 #include <type_traits>
 #include <utility>  // std::in_place_t, std::move
@@ -215,7 +215,10 @@ public:
         : value_(std::in_place), ok_(true) {}
     // Turns this result into an error.
     constexpr result& operator=(robowire::error e) noexcept {
-        std::construct_at(&error_, e);  // makes the error the active member
+        if (std::is_constant_evaluated())
+            *this = result(e);  // a whole-object copy switches the active member in a constant expression
+        else
+            ::new (static_cast<void*>(&error_)) robowire::error(e);  // makes the error the active member
         ok_ = false;
         return *this;
     }
