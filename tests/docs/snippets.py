@@ -12,6 +12,7 @@ Usage: snippets.py [--list] [compiler...]   (run from anywhere)
 """
 import os
 import re
+import concurrent.futures
 import subprocess
 import sys
 import tempfile
@@ -73,6 +74,9 @@ def sources():
 def translation_unit(rel, line, code):
     if re.search(r"\bint\s+main\s*\(", code):
         return f'#line {line} "{rel}"\n{code}', False
+    if re.search(r"^\s*constexpr auto table_of\(", code, re.M):
+        # Declarations (a message and its table), as they would sit in a protocol's namespace.
+        return f'{PRELUDE}\nnamespace robowire::osp::snippet {{\n#line {line} "{rel}"\n{code}}}\n', False
     return f'{PRELUDE}\nvoid snippet() {{\n#line {line} "{rel}"\n{code}}}\n', True
 
 
@@ -89,6 +93,7 @@ def main(argv):
         return 1
     failures = 0
     with tempfile.TemporaryDirectory() as tmp:
+        jobs = []
         for i, (rel, line, code) in enumerate(snippets):
             tu, fragment = translation_unit(rel, line, code)
             src = os.path.join(tmp, f"snippet{i}.cpp")
@@ -96,13 +101,16 @@ def main(argv):
                 f.write(tu)
             for cxx in compilers:
                 cmd = [cxx, *STRICT, *(FRAGMENT_ONLY if fragment else []), "-I", os.path.join(ROOT, "include"),
-                       "-c", src, "-o", os.devnull]
-                r = subprocess.run(cmd, capture_output=True, text=True)
-                status = "ok" if r.returncode == 0 else "FAILED"
-                print(f"{status:6} {cxx:8} {rel}:{line}")
-                if r.returncode != 0:
-                    failures += 1
-                    print(r.stderr[:4000])
+                       "-fsyntax-only", src]
+                jobs.append((cxx, rel, line, cmd))
+        with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
+            results = list(pool.map(lambda j: subprocess.run(j[3], capture_output=True, text=True), jobs))
+        for (cxx, rel, line, _), r in zip(jobs, results):
+            status = "ok" if r.returncode == 0 else "FAILED"
+            print(f"{status:6} {cxx:8} {rel}:{line}")
+            if r.returncode != 0:
+                failures += 1
+                print(r.stderr[:4000])
     print(f"{len(snippets)} snippets, {len(compilers)} compilers, {failures} failures")
     return 1 if failures else 0
 
