@@ -84,11 +84,13 @@ struct protocol {
     // values: name=value pairs in the order given (names checked, repeats refused here)
     outcome (*encode)(std::string_view message, const std::vector<std::pair<std::string, std::string>>& values);
 };
+// One per protocol, defined in tools/<protocol>.cpp (a new protocol needs only
+// its entry, and its declaration, in protocols.cpp).
 const protocol& buwizz3_protocol();
 outcome buwizz3_encode(std::string_view message, const std::vector<std::pair<std::string, std::string>>& values);  // buwizz3_encode.cpp
 const protocol& navbot_protocol();
 const protocol& osp_protocol();
-// Every protocol, in `list` order; nullptr for an unknown name.
+// Every protocol, in `list` order (protocols.cpp); nullptr for an unknown name.
 std::span<const protocol* const> protocols();
 const protocol* find_protocol(std::string_view name);
 

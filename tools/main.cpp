@@ -18,16 +18,6 @@
 
 namespace robowire::cli {
 
-std::span<const protocol* const> protocols() {
-    static const protocol* const all[] = {&buwizz3_protocol(), &navbot_protocol(), &osp_protocol()};
-    return all;
-}
-const protocol* find_protocol(std::string_view name) {
-    for (const protocol* p : protocols())
-        if (p->name == name) return p;
-    return nullptr;
-}
-
 namespace {
 
 // Accepts a value that does not start with '-' (the option's type then checks it is a number).

@@ -1,0 +1,17 @@
+// The tool's protocols, in `list` order: the one place a new protocol's
+// tools/<protocol>.cpp is named.
+#include "cli.hpp"
+
+namespace robowire::cli {
+
+std::span<const protocol* const> protocols() {
+    static const protocol* const all[] = {&buwizz3_protocol(), &navbot_protocol(), &osp_protocol()};
+    return all;
+}
+const protocol* find_protocol(std::string_view name) {
+    for (const protocol* p : protocols())
+        if (p->name == name) return p;
+    return nullptr;
+}
+
+}  // namespace robowire::cli
