@@ -112,6 +112,7 @@ constexpr auto table_of(std::type_identity<status>) {
         field{"charge_current_ma", &M::charge_current_ma, 21, wire::u8{}, unit{"mA"}},
         field{"pu_motors", &M::pu_motors, 22, wire::record{}}, field{"pid_state", &M::pid_state, 54, wire::record{}});
     t.declared_max_input = 129;
+    t.members_not_on_wire = 1;  // ignored_trailing_bytes
     return t;
 }
 

@@ -122,6 +122,7 @@ struct message_table {
     detail::field_list<F...> fields;  // fields.get<I>(), fields.each(fn)
     std::size_t declared_max_input = 0;  // longest accepted input; 0: max_size(). Longer is decoded, the rest ignored.
     std::size_t declared_size = 0;       // nonzero: the message is at least this long (reserved bytes after the last field)
+    std::size_t members_not_on_wire = 0; // struct members no field covers (e.g. decode statistics); checked
 
     static constexpr std::size_t field_count = sizeof...(F);
 

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 
 #include "../bits.hpp"
 #include "../wire.hpp"
@@ -21,6 +22,26 @@ inline void table_fields_overlap(std::string_view /*message*/, std::string_view 
 inline void table_field_beyond_message_size(std::string_view /*message*/, std::string_view /*field*/) noexcept {}
 inline void table_fixed_byte_beyond_message_size(std::string_view /*message*/, std::size_t /*offset*/) noexcept {}
 inline void table_fixed_byte_under_field(std::string_view /*message*/, std::string_view /*field*/) noexcept {}
+inline void table_leaves_struct_members_without_field(std::string_view /*message*/, std::size_t /*members*/,
+                                                      std::size_t /*fields_plus_members_not_on_wire*/) noexcept {}
+
+// Converts to any member type: counts an aggregate's members by how many it
+// initialises.
+struct any_member {
+    template <class T>
+    operator T&() const&& noexcept;  // declared only: used in unevaluated operands
+};
+template <class M, std::size_t... I>
+constexpr bool initialisable_with(std::index_sequence<I...>) noexcept {
+    return requires { M{((void)I, any_member{})...}; };
+}
+// Members of aggregate M (0 when M is not an aggregate).
+template <class M, std::size_t N = 0>
+constexpr std::size_t aggregate_member_count() noexcept {
+    if constexpr (!std::is_aggregate_v<M>) return 0;
+    else if constexpr (N >= 64 || !initialisable_with<M>(std::make_index_sequence<N + 1>{})) return N;
+    else return aggregate_member_count<M, N + 1>();
+}
 
 // Checks a message or record table; returns it unchanged.
 template <class Table>
@@ -52,6 +73,10 @@ constexpr const Table& checked_table(const Table& t) noexcept {
     });
     for (const auto& b : t.fixed)
         if (limit != 0 && b.offset >= limit) table_fixed_byte_beyond_message_size(t.name, b.offset);
+    // Every struct member is on the wire (a field) or declared as not on it.
+    constexpr std::size_t members = aggregate_member_count<typename Table::message_type>();
+    if (members != 0 && members != Table::field_count + t.members_not_on_wire)
+        table_leaves_struct_members_without_field(t.name, members, Table::field_count + t.members_not_on_wire);
     return t;
 }
 
