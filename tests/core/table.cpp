@@ -1,4 +1,6 @@
 // The generic table-driven codec, on a message made up for the test.
+#include <robowire/core/decode.hpp>
+#include <robowire/core/encode.hpp>
 #include <robowire/core/table.hpp>
 
 #include <array>

@@ -28,7 +28,7 @@ struct advertisement {
 // Manufacturer data payload after AD type 0xFF: company 0x054E little-endian, then 'B' 'W'.
 inline constexpr std::array<std::uint8_t, 4> manufacturer_prefix{0x4E, 0x05, 0x42, 0x57};
 
-namespace detail {
+namespace impl {
 constexpr void read_structures(std::span<const std::uint8_t> adv, advertisement& out, error& err) noexcept {
     ad::reader r(adv);
     while (auto s = r.next()) {
@@ -60,7 +60,7 @@ constexpr void read_structures(std::span<const std::uint8_t> adv, advertisement&
     }
     if (r.error().code != errc::ok && err.code == errc::ok) err = r.error();
 }
-}  // namespace detail
+}  // namespace impl
 
 // Parses an advertisement and, optionally, its scan response. When several
 // BuWizz3 manufacturer data structures are present, the last one counts. Returns
@@ -71,9 +71,9 @@ constexpr result<std::optional<advertisement>> parse_advertisement(
     std::span<const std::uint8_t> adv, std::span<const std::uint8_t> scan_response = {}) noexcept {
     advertisement out;
     error err{};
-    detail::read_structures(adv, out, err);
+    impl::read_structures(adv, out, err);
     error err2{};
-    detail::read_structures(scan_response, out, err2);
+    impl::read_structures(scan_response, out, err2);
     if (err.code != errc::ok) return err;
     if (err2.code != errc::ok) return error{err2.code, adv.size() + err2.offset};
     if (!out.has_manufacturer_data && !out.has_service_uuid) return std::optional<advertisement>{};

@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <optional>
 
+#include "../core/decode.hpp"
+#include "../core/encode.hpp"
 #include "../core/table.hpp"
 
 namespace robowire::buwizz3 {
@@ -203,66 +205,66 @@ constexpr auto enum_table_of(std::type_identity<port_function>) {
 }
 
 // ---- tables ----
-namespace detail {
+namespace impl {
 constexpr fixed_byte cmd(std::uint8_t c) noexcept { return {0, c, errc::bad_command}; }
 inline constexpr range motor_power{-127, 127};
 inline constexpr range port_flags{0, 0x3F};
-}  // namespace detail
+}  // namespace impl
 
 constexpr auto table_of(std::type_identity<set_device_name>) {
     using M = set_device_name;
-    return make_table<M>("set_device_name", {detail::cmd(0x20)}, field{"name", &M::name, 1, wire::text{}});
+    return make_table<M>("set_device_name", {impl::cmd(0x20)}, field{"name", &M::name, 1, wire::text{}});
 }
 constexpr auto table_of(std::type_identity<set_motion_wakeup>) {
     using M = set_motion_wakeup;
-    return make_table<M>("set_motion_wakeup", {detail::cmd(0x21)}, field{"enabled", &M::enabled, 1, wire::u8{}},
+    return make_table<M>("set_motion_wakeup", {impl::cmd(0x21)}, field{"enabled", &M::enabled, 1, wire::u8{}},
                          field{"idle_timeout_s", &M::idle_timeout_s, 2, wire::u32le{}, range{10, 0xFFFFFFFF}, unit{"s"}},
                          field{"shallow_sleep_timeout_s", &M::shallow_sleep_timeout_s, 6, wire::u32le{}, unit{"s"}});
 }
 constexpr auto table_of(std::type_identity<set_accel_calibration>) {
     using M = set_accel_calibration;
-    return make_table<M>("set_accel_calibration", {detail::cmd(0x22)}, field{"factors", &M::factors, 1, wire::f32le{}});
+    return make_table<M>("set_accel_calibration", {impl::cmd(0x22)}, field{"factors", &M::factors, 1, wire::f32le{}});
 }
 constexpr auto table_of(std::type_identity<read_accel_calibration>) {
-    return make_table<read_accel_calibration>("read_accel_calibration", {detail::cmd(0x23)});
+    return make_table<read_accel_calibration>("read_accel_calibration", {impl::cmd(0x23)});
 }
 constexpr auto table_of(std::type_identity<accel_calibration>) {
     using M = accel_calibration;
-    return make_table<M>("accel_calibration", {detail::cmd(0x23)}, field{"factors", &M::factors, 1, wire::f32le{}});
+    return make_table<M>("accel_calibration", {impl::cmd(0x23)}, field{"factors", &M::factors, 1, wire::f32le{}});
 }
 constexpr auto table_of(std::type_identity<set_motor_data>) {
     using M = set_motor_data;
-    return make_table<M>("set_motor_data", {detail::cmd(0x30)},
-                         field{"power", &M::power, 1, wire::i8{}, detail::motor_power, unit{"%", 100.0 / 127.0}},
-                         field{"brake_flags", &M::brake_flags, 7, wire::u8{}, detail::port_flags},
-                         field{"lut_disable_flags", &M::lut_disable_flags, 8, wire::u8{}, detail::port_flags});
+    return make_table<M>("set_motor_data", {impl::cmd(0x30)},
+                         field{"power", &M::power, 1, wire::i8{}, impl::motor_power, unit{"%", 100.0 / 127.0}},
+                         field{"brake_flags", &M::brake_flags, 7, wire::u8{}, impl::port_flags},
+                         field{"lut_disable_flags", &M::lut_disable_flags, 8, wire::u8{}, impl::port_flags});
 }
 constexpr auto table_of(std::type_identity<set_motor_data_extended>) {
     using M = set_motor_data_extended;
-    return make_table<M>("set_motor_data_extended", {detail::cmd(0x31)},
+    return make_table<M>("set_motor_data_extended", {impl::cmd(0x31)},
                          field{"reference", &M::reference, 1, wire::i32le{}},
-                         field{"power", &M::power, 17, wire::i8{}, detail::motor_power, unit{"%", 100.0 / 127.0}},
-                         field{"brake_flags", &M::brake_flags, 19, wire::u8{}, detail::port_flags},
-                         field{"lut_disable_flags", &M::lut_disable_flags, 20, wire::u8{}, detail::port_flags});
+                         field{"power", &M::power, 17, wire::i8{}, impl::motor_power, unit{"%", 100.0 / 127.0}},
+                         field{"brake_flags", &M::brake_flags, 19, wire::u8{}, impl::port_flags},
+                         field{"lut_disable_flags", &M::lut_disable_flags, 20, wire::u8{}, impl::port_flags});
 }
 constexpr auto table_of(std::type_identity<set_data_period>) {
     using M = set_data_period;
-    return make_table<M>("set_data_period", {detail::cmd(0x32)},
+    return make_table<M>("set_data_period", {impl::cmd(0x32)},
                          field{"period_ms", &M::period_ms, 1, wire::u8{}, range{20, 255}, unit{"ms"}});
 }
 constexpr auto table_of(std::type_identity<set_ramp_rates>) {
     using M = set_ramp_rates;
-    return make_table<M>("set_ramp_rates", {detail::cmd(0x33)},
+    return make_table<M>("set_ramp_rates", {impl::cmd(0x33)},
                          field{"ramp_up", &M::ramp_up, 1, wire::u8{}, unit{"%/128ms"}},
                          field{"ramp_down", &M::ramp_down, 7, wire::u8{}, unit{"%/128ms"}});
 }
 constexpr auto table_of(std::type_identity<set_motor_timeout>) {
     using M = set_motor_timeout;
-    return make_table<M>("set_motor_timeout", {detail::cmd(0x34)}, field{"mode", &M::mode, 1, wire::u8{}, range{0, 254}});
+    return make_table<M>("set_motor_timeout", {impl::cmd(0x34)}, field{"mode", &M::mode, 1, wire::u8{}, range{0, 254}});
 }
 constexpr auto table_of(std::type_identity<activate_watchdog>) {
     using M = activate_watchdog;
-    return make_table<M>("activate_watchdog", {detail::cmd(0x35)},
+    return make_table<M>("activate_watchdog", {impl::cmd(0x35)},
                          field{"timeout_s", &M::timeout_s, 1, wire::u8{}, unit{"s"}});
 }
 constexpr auto table_of(std::type_identity<rgb>) {
@@ -275,40 +277,40 @@ constexpr auto table_of(std::type_identity<blink>) {
 }
 constexpr auto table_of(std::type_identity<set_led_status>) {
     using M = set_led_status;
-    return make_table<M>("set_led_status", {detail::cmd(0x36)}, field{"colors", &M::colors, 1, wire::record{}},
+    return make_table<M>("set_led_status", {impl::cmd(0x36)}, field{"colors", &M::colors, 1, wire::record{}},
                          field{"blink", &M::blink, 13, wire::record{}});
 }
 constexpr auto table_of(std::type_identity<set_accel_lpf>) {
     using M = set_accel_lpf;
-    return make_table<M>("set_accel_lpf", {detail::cmd(0x37)}, field{"setting", &M::setting, 1, wire::u8{}});
+    return make_table<M>("set_accel_lpf", {impl::cmd(0x37)}, field{"setting", &M::setting, 1, wire::u8{}});
 }
 constexpr auto table_of(std::type_identity<set_current_limits>) {
     using M = set_current_limits;
-    return make_table<M>("set_current_limits", {detail::cmd(0x38)},
+    return make_table<M>("set_current_limits", {impl::cmd(0x38)},
                          field{"limit_raw", &M::limit_raw, 1, wire::u8{}, unit{"mA", 30.0}});
 }
 constexpr auto table_of(std::type_identity<set_uart_baudrate>) {
     using M = set_uart_baudrate;
-    return make_table<M>("set_uart_baudrate", {detail::cmd(0x40), {1, 0x10, errc::bad_command}},
+    return make_table<M>("set_uart_baudrate", {impl::cmd(0x40), {1, 0x10, errc::bad_command}},
                          field{"channel", &M::channel, 2, wire::u8{}},
                          field{"baudrate", &M::baudrate, 3, wire::u32le{}, unit{"baud"}});
 }
 constexpr auto table_of(std::type_identity<set_pu_port_function>) {
     using M = set_pu_port_function;
-    return make_table<M>("set_pu_port_function", {detail::cmd(0x50)}, field{"function", &M::function, 1, wire::u8{}});
+    return make_table<M>("set_pu_port_function", {impl::cmd(0x50)}, field{"function", &M::function, 1, wire::u8{}});
 }
 constexpr auto table_of(std::type_identity<enable_pid_reporting>) {
     using M = enable_pid_reporting;
-    return make_table<M>("enable_pid_reporting", {detail::cmd(0x51)}, field{"port", &M::port, 1, wire::u8{}, range{0, 4}});
+    return make_table<M>("enable_pid_reporting", {impl::cmd(0x51)}, field{"port", &M::port, 1, wire::u8{}, range{0, 4}});
 }
 constexpr auto table_of(std::type_identity<set_servo_reference>) {
     using M = set_servo_reference;
-    return make_table<M>("set_servo_reference", {detail::cmd(0x52)}, field{"reference", &M::reference, 1, wire::i32le{}});
+    return make_table<M>("set_servo_reference", {impl::cmd(0x52)}, field{"reference", &M::reference, 1, wire::i32le{}});
 }
 constexpr auto table_of(std::type_identity<set_pid_parameters>) {
     using M = set_pid_parameters;
     return make_table<M>(
-        "set_pid_parameters", {detail::cmd(0x53)}, field{"port", &M::port, 1, wire::u8{}, range{0, 3}},
+        "set_pid_parameters", {impl::cmd(0x53)}, field{"port", &M::port, 1, wire::u8{}, range{0, 3}},
         field{"out_lp", &M::out_lp, 2, wire::f32le{}}, field{"d_lp", &M::d_lp, 6, wire::f32le{}},
         field{"speed_lp", &M::speed_lp, 10, wire::f32le{}}, field{"kp", &M::kp, 14, wire::f32le{}},
         field{"ki", &M::ki, 18, wire::f32le{}}, field{"kd", &M::kd, 22, wire::f32le{}},
@@ -320,14 +322,14 @@ constexpr auto table_of(std::type_identity<set_pid_parameters>) {
         field{"mode", &M::mode, 37, wire::u8{}});
 }
 constexpr auto table_of(std::type_identity<activate_shelf_mode>) {
-    return make_table<activate_shelf_mode>("activate_shelf_mode", {detail::cmd(0xA1)});
+    return make_table<activate_shelf_mode>("activate_shelf_mode", {impl::cmd(0xA1)});
 }
 constexpr auto table_of(std::type_identity<check_charger_settings>) {
-    return make_table<check_charger_settings>("check_charger_settings", {detail::cmd(0xAC)});
+    return make_table<check_charger_settings>("check_charger_settings", {impl::cmd(0xAC)});
 }
 constexpr auto table_of(std::type_identity<charger_settings>) {
     using M = charger_settings;
-    return make_table<M>("charger_settings", {detail::cmd(0xAC)}, field{"data", &M::data, 1, wire::tail{}});
+    return make_table<M>("charger_settings", {impl::cmd(0xAC)}, field{"data", &M::data, 1, wire::tail{}});
 }
 
 }  // namespace robowire::buwizz3

@@ -9,6 +9,8 @@
 #include <optional>
 
 #include "../core/bits.hpp"
+#include "../core/decode.hpp"
+#include "../core/encode.hpp"
 #include "../core/table.hpp"
 
 namespace robowire::buwizz3 {

@@ -8,6 +8,9 @@
 #include <span>
 #include <variant>
 
+#include "config.hpp"
+#include "decode.hpp"
+#include "encode.hpp"
 #include "table.hpp"
 
 namespace robowire {

@@ -75,7 +75,7 @@ enum class sign_encoding : std::uint8_t {
     sign_magnitude,   // the protocol document's samples (0x8A = -10); not for the real robot
 };
 
-namespace detail {
+namespace impl {
 // Rewrites every i8 field of maneuver's table between the two encodings.
 template <bool ToSignMagnitude>
 constexpr void convert_signed(std::span<std::uint8_t> b) noexcept {
@@ -88,13 +88,13 @@ constexpr void convert_signed(std::span<std::uint8_t> b) noexcept {
         }
     });
 }
-}  // namespace detail
+}  // namespace impl
 
 // Encodes with the chosen sign encoding (robowire::encode(m) is two's complement).
 [[nodiscard]] constexpr result<bytes<frame_size>> encode(const maneuver& m,
                                                          sign_encoding enc = sign_encoding::twos_complement) noexcept {
     auto r = robowire::encode(m);
-    if (r && enc == sign_encoding::sign_magnitude) detail::convert_signed<true>(r->span());
+    if (r && enc == sign_encoding::sign_magnitude) impl::convert_signed<true>(r->span());
     return r;
 }
 
@@ -104,7 +104,7 @@ constexpr void convert_signed(std::span<std::uint8_t> b) noexcept {
     if (enc == sign_encoding::twos_complement || in.size() != frame_size) return robowire::decode<maneuver>(in);
     std::array<std::uint8_t, frame_size> copy{};
     for (std::size_t i = 0; i < frame_size; ++i) copy[i] = in[i];
-    detail::convert_signed<false>(copy);
+    impl::convert_signed<false>(copy);
     return robowire::decode<maneuver>(copy);
 }
 

@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "../core/config.hpp"
 #include "../core/dispatch.hpp"
 #include "messages.hpp"
 
@@ -34,7 +35,7 @@ private:
     std::optional<osp::frame> frame_;
 };
 
-namespace detail {
+namespace impl {
 // DEV << 8 | CMD of message M (its fixed bytes 2 and 3).
 template <class M>
 constexpr std::uint16_t key_of() noexcept {
@@ -53,7 +54,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::uint1
         ((key == key_of<std::variant_alternative_t<I, message>>() ? (decode_message<I>(d, in), true) : false) || ...);
     if (!known) d = fail(errc::unknown_message, 2);
 }
-}  // namespace detail
+}  // namespace impl
 
 // Decodes one 10-byte frame into whichever message its DEV and CMD name.
 // Errors: too_short / too_long, bad_header, bad_trailer, unknown_message
@@ -66,7 +67,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::uint1
         return d;
     }
     d.frame_ = f;
-    detail::decode_by_key(d, static_cast<std::uint16_t>(f.device << 8 | f.command), in,
+    impl::decode_by_key(d, static_cast<std::uint16_t>(f.device << 8 | f.command), in,
                           std::make_index_sequence<std::variant_size_v<message>>{});
     return d;
 }

@@ -5,6 +5,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "../core/decode.hpp"
+#include "../core/encode.hpp"
 #include "../core/table.hpp"
 
 namespace robowire::osp {
@@ -30,7 +32,7 @@ constexpr auto table_of(std::type_identity<frame>) {
                              field{"params", &frame::params, 4, wire::u8{}});
 }
 
-namespace detail {
+namespace impl {
 // Fixed bytes of a message with device `dev` and command `cmd`.
 constexpr std::array<fixed_byte, 6> fixed(std::uint8_t dev, std::uint8_t cmd) noexcept {
     return {{{0, start1, errc::bad_header},
@@ -40,7 +42,7 @@ constexpr std::array<fixed_byte, 6> fixed(std::uint8_t dev, std::uint8_t cmd) no
              {8, end1, errc::bad_trailer},
              {9, end2, errc::bad_trailer}}};
 }
-}  // namespace detail
+}  // namespace impl
 
 // Device byte (DEV) values.
 namespace device_id {

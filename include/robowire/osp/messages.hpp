@@ -23,7 +23,7 @@ struct request_device_type {
     friend constexpr bool operator==(const request_device_type&, const request_device_type&) = default;
 };
 constexpr auto table_of(std::type_identity<request_device_type>) {
-    return make_table<request_device_type>("request_device_type", detail::fixed(0x00, 0x01));
+    return make_table<request_device_type>("request_device_type", impl::fixed(0x00, 0x01));
 }
 
 // INFO_DEV_TYPE, DEV 0x00 CMD 0x11. P1: the device's type.
@@ -32,7 +32,7 @@ struct device_type {
     friend constexpr bool operator==(const device_type&, const device_type&) = default;
 };
 constexpr auto table_of(std::type_identity<device_type>) {
-    return make_table<device_type>("device_type", detail::fixed(0x00, 0x11), field{"type", &device_type::type, 4, wire::u8{}});
+    return make_table<device_type>("device_type", impl::fixed(0x00, 0x11), field{"type", &device_type::type, 4, wire::u8{}});
 }
 }  // namespace generic
 
@@ -44,7 +44,7 @@ struct set_angle {
     friend constexpr bool operator==(const set_angle&, const set_angle&) = default;
 };
 constexpr auto table_of(std::type_identity<set_angle>) {
-    return make_table<set_angle>("set_angle", detail::fixed(0x01, 0x02), field{"joint", &set_angle::joint, 4, wire::u8{}},
+    return make_table<set_angle>("set_angle", impl::fixed(0x01, 0x02), field{"joint", &set_angle::joint, 4, wire::u8{}},
                                  field{"angle", &set_angle::angle, 5, wire::u16le{}, unit{"rad", std::numbers::pi / 16384.0}});
 }
 
@@ -73,15 +73,15 @@ struct request_current {  // OBP_CMD_REQ_CURRENT, CMD 0x03 -> current
 struct request_status {  // OBP_CMD_REQ_STATUS, CMD 0x04 -> status
     friend constexpr bool operator==(const request_status&, const request_status&) = default;
 };
-constexpr auto table_of(std::type_identity<request_soc>) { return make_table<request_soc>("request_soc", detail::fixed(0x02, 0x01)); }
+constexpr auto table_of(std::type_identity<request_soc>) { return make_table<request_soc>("request_soc", impl::fixed(0x02, 0x01)); }
 constexpr auto table_of(std::type_identity<request_voltage>) {
-    return make_table<request_voltage>("request_voltage", detail::fixed(0x02, 0x02));
+    return make_table<request_voltage>("request_voltage", impl::fixed(0x02, 0x02));
 }
 constexpr auto table_of(std::type_identity<request_current>) {
-    return make_table<request_current>("request_current", detail::fixed(0x02, 0x03));
+    return make_table<request_current>("request_current", impl::fixed(0x02, 0x03));
 }
 constexpr auto table_of(std::type_identity<request_status>) {
-    return make_table<request_status>("request_status", detail::fixed(0x02, 0x04));
+    return make_table<request_status>("request_status", impl::fixed(0x02, 0x04));
 }
 
 // OBP_INFO_SOC, CMD 0x11. State of charge, 0 = 0 %, 65535 = 100 %.
@@ -128,19 +128,19 @@ struct status {
 };
 
 constexpr auto table_of(std::type_identity<soc>) {
-    return make_table<soc>("soc", detail::fixed(0x02, 0x11),
+    return make_table<soc>("soc", impl::fixed(0x02, 0x11),
                            field{"soc_raw", &soc::soc_raw, 4, wire::u16le{}, unit{"%", 100.0 / 65535.0}});
 }
 constexpr auto table_of(std::type_identity<voltage>) {
-    return make_table<voltage>("voltage", detail::fixed(0x02, 0x12),
+    return make_table<voltage>("voltage", impl::fixed(0x02, 0x12),
                                field{"centivolts", &voltage::centivolts, 4, wire::i16le{}, unit{"V", 0.01}});
 }
 constexpr auto table_of(std::type_identity<current>) {
-    return make_table<current>("current", detail::fixed(0x02, 0x13),
+    return make_table<current>("current", impl::fixed(0x02, 0x13),
                                field{"milliamps", &current::milliamps, 4, wire::i16le{}, unit{"A", 0.001}});
 }
 constexpr auto table_of(std::type_identity<status>) {
-    return make_table<status>("status", detail::fixed(0x02, 0x14), field{"state", &status::state, 4, wire::u8{}},
+    return make_table<status>("status", impl::fixed(0x02, 0x14), field{"state", &status::state, 4, wire::u8{}},
                               field{"flags", &status::flags, 5, wire::u8{}});
 }
 

@@ -1,0 +1,50 @@
+// robowire/core/decode.hpp - decode a message from bytes, driven by its table.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <utility>
+
+#include "detail/decode.hpp"
+#include "result.hpp"
+#include "table.hpp"
+
+namespace robowire {
+
+// reserved_not_zero at the first reserved byte of `in` that is not zero.
+template <class M>
+[[nodiscard]] constexpr result<std::size_t> check_reserved(std::span<const std::uint8_t> in) noexcept {
+    constexpr auto reserved = reserved_bytes<M>();
+    for (std::size_t i = 0; i < in.size() && i < reserved.size(); ++i)
+        if (reserved[i] && in[i] != 0) return fail(errc::reserved_not_zero, i);
+    return in.size();
+}
+
+// Decodes `in` into `out` (an existing object, e.g. one refreshed 20 times a
+// second): the same checks as decode(); returns errc::ok or the error. On an
+// error, `out`'s fields are unspecified.
+template <described M>
+[[nodiscard]] constexpr error decode_into(M& out, std::span<const std::uint8_t> in) noexcept {
+    constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input(), extent = table_v<M>.max_size();
+    if (const error e = detail::check_fixed<M>(in, std::make_index_sequence<detail::fixed_count_v<M>>{}); e.code != errc::ok)
+        return e;
+    if (in.size() < min) return fail(errc::too_short, in.size());
+    if (in.size() > max) return fail(errc::too_long, max);
+    error err{};
+    const auto known = in.size() > extent ? in.first(extent) : in;
+    if (!detail::decode_record<M, 0>(out, known, err, std::make_index_sequence<detail::field_count_v<M>>{})) return err;
+    if constexpr (detail::reports_trailing<M>) out.ignored_trailing_bytes = in.size() - known.size();
+    return err;
+}
+
+// Decodes a message of type M from `in`; every length, fixed byte, range and
+// enum is checked, and the error says what and at which byte offset.
+template <described M>
+[[nodiscard]] constexpr result<M> decode(std::span<const std::uint8_t> in) noexcept {
+    result<M> r{std::in_place};  // built in place: every return below returns r
+    if (const error e = decode_into(*r, in); e.code != errc::ok) r = e;
+    return r;
+}
+
+}  // namespace robowire

@@ -1,0 +1,154 @@
+// robowire/core/detail/decode.hpp - internal: the table-driven decoder,
+// one inlined step per field; every offset and range is a template constant.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <span>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+#include "../bits.hpp"
+#include "../config.hpp"
+#include "../endian.hpp"
+#include "../result.hpp"
+#include "../table.hpp"
+#include "access.hpp"
+
+namespace robowire::detail {
+
+// ---- decode: every offset and range below is a template constant
+
+template <class M, std::size_t I, std::size_t Off, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::uint8_t> in, error& err) noexcept;
+
+template <class M, std::size_t Base, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, error& err,
+                                                    std::index_sequence<I...>) noexcept;
+
+template <class M, std::size_t I, std::size_t Off, class V, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_array(V& v, std::span<const std::uint8_t> in, error& err,
+                                                   std::index_sequence<K...>) noexcept {
+    return (decode_element<M, I, Off + K * field_t<M, I>::element_size>(v[K], in, err) && ...);
+}
+
+template <class M, std::size_t I, std::size_t Off, class V>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_value(V& v, std::span<const std::uint8_t> in, error& err) noexcept {
+    using F = field_t<M, I>;
+    if constexpr (plain_byte_array_v<M, I>) {
+        if (!std::is_constant_evaluated()) {
+            std::memcpy(v.data(), in.data() + Off, F::count);
+            return true;
+        }
+    }
+    if constexpr (F::is_array) return decode_array<M, I, Off>(v, in, err, std::make_index_sequence<F::count>{});
+    else return decode_element<M, I, Off>(v, in, err);
+}
+
+template <class M, std::size_t I, std::size_t Base>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::uint8_t> in, error& err) noexcept {
+    constexpr const auto& f = field_v<M, I>;
+    using F = field_t<M, I>;
+    constexpr std::size_t off = Base + f.offset;
+    constexpr auto member_ptr = f.member;
+    auto& member = m.*member_ptr;
+    if constexpr (F::is_optional) {
+        if (in.size() <= off) { member.reset(); return true; }  // absent
+        if (in.size() < off + F::size) { err = {errc::bad_length, off}; return false; }
+        value_t<typename F::member_type> tmp{};  // stored whole once decoded
+        if (!decode_value<M, I, off>(tmp, in, err)) return false;
+        member = tmp;
+        return true;
+    } else {
+        return decode_value<M, I, off>(member, in, err);
+    }
+}
+
+template <class M, std::size_t Base, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, error& err,
+                                                    std::index_sequence<I...>) noexcept {
+    (void)m, (void)in, (void)err;  // messages without fields
+    return (decode_field<M, I, Base>(m, in, err) && ...);
+}
+
+template <class M, std::size_t I, std::size_t Off, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::uint8_t> in, error& err) noexcept {
+    constexpr const auto& f = field_v<M, I>;
+    using F = field_t<M, I>;
+    using W = typename F::wire_type;
+    if constexpr (W::kind == wire_kind::record) {
+        // Decoded into a local, then stored whole: the loads are not ordered
+        // behind byte stores that might alias the input, so they merge.
+        E tmp{};
+        if (!decode_record<E, Off>(tmp, in, err, std::make_index_sequence<field_count_v<E>>{})) return false;
+        v = tmp;
+        return true;
+    } else if constexpr (W::kind == wire_kind::text) {
+        constexpr std::size_t n = text_traits<E>::size;
+        std::size_t len = 0;
+        while (len < n && in[Off + len] != 0) ++len;
+        for (std::size_t i = len; i < n; ++i)
+            if (in[Off + i] != 0) { err = {errc::bad_padding, Off + i}; return false; }
+        std::array<char, n> chars{};
+        for (std::size_t i = 0; i < len; ++i) chars[i] = static_cast<char>(in[Off + i]);
+        v.assign(std::string_view(chars.data(), len));
+        return true;
+    } else if constexpr (W::kind == wire_kind::tail) {
+        const std::size_t end = in.size() < Off + F::size ? in.size() : Off + F::size;
+        v.clear();
+        (void)v.append(in.subspan(Off, end > Off ? end - Off : 0));
+        return true;
+    } else if constexpr (W::kind == wire_kind::f32le) {
+        v = load_le<float>(in.data() + Off);
+        return true;
+    } else {
+        std::int64_t raw = 0;
+        if constexpr (W::kind == wire_kind::bits) raw = get_bits(in[Off], W::lo, W::width);
+        else raw = load_le<typename W::raw_type>(in.data() + Off);
+        if constexpr (std::is_enum_v<E>) {
+            const auto e = static_cast<E>(raw);
+            if (!is_valid_enum(e)) { err = {errc::invalid_enum, Off}; return false; }
+            v = e;
+        } else {
+            constexpr range valid = f.valid;
+            constexpr range full = [] {  // what the wire bytes can hold
+                if constexpr (W::kind == wire_kind::bits) return range{0, low_mask(W::width)};
+                else return range{std::numeric_limits<typename W::raw_type>::min(), std::numeric_limits<typename W::raw_type>::max()};
+            }();
+            if constexpr (valid.min > full.min || valid.max < full.max) {
+                if (raw < valid.min || raw > valid.max) { err = {errc::value_out_of_range, Off}; return false; }
+            }
+            if constexpr (std::is_same_v<E, bool>) v = raw != 0;
+            else v = static_cast<E>(raw);
+        }
+        return true;
+    }
+}
+
+// The first fixed byte of M that `in` has and gets wrong, as an error (code ok if none).
+template <class M, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE constexpr error check_fixed(std::span<const std::uint8_t> in, std::index_sequence<K...>) noexcept {
+    error e{};
+    (void)((((table_v<M>.fixed[K].offset < in.size()) &&
+             in[table_v<M>.fixed[K].offset] != table_v<M>.fixed[K].value)
+                ? (e = {table_v<M>.fixed[K].code, table_v<M>.fixed[K].offset}, true)
+                : false) ||
+           ...);
+    return e;
+}
+
+// Fields only, no fixed-byte or length checks: for dispatchers that have
+// checked both already (`in` holds at least max_size() bytes).
+template <described M>
+ROBOWIRE_ALWAYS_INLINE constexpr error decode_fields(M& out, std::span<const std::uint8_t> in) noexcept {
+    error err{};
+    (void)decode_record<M, 0>(out, in.first(table_v<M>.max_size()), err,
+                              std::make_index_sequence<field_count_v<M>>{});
+    return err;
+}
+
+}  // namespace robowire::detail

@@ -1,0 +1,230 @@
+// robowire/core/detail/encode.hpp - internal: the table-driven encoder, in
+// two passes (check every field, then store them all).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <span>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+#include "../bits.hpp"
+#include "../config.hpp"
+#include "../endian.hpp"
+#include "../result.hpp"
+#include "../table.hpp"
+#include "access.hpp"
+
+namespace robowire::detail {
+
+// ---- encode, in two passes: check every field (the first error wins), then
+// write them all without a branch, so that the stores can merge.
+
+template <class M, std::size_t I, std::size_t Off, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, error& err) noexcept;
+
+template <class M, std::size_t Base, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(const M& m, error& err, std::index_sequence<I...>) noexcept;
+
+template <class M, std::size_t I, std::size_t Off, class V, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_array(const V& v, error& err, std::index_sequence<K...>) noexcept {
+    return (check_element<M, I, Off + K * field_t<M, I>::element_size>(v[K], err) && ...);
+}
+
+template <class M, std::size_t I, std::size_t Base>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_field(const M& m, error& err) noexcept {
+    using F = field_t<M, I>;
+    constexpr std::size_t off = Base + field_v<M, I>.offset;
+    constexpr auto member_ptr = field_v<M, I>.member;
+    const auto& member = m.*member_ptr;
+    auto value = [&](const auto& v) {
+        if constexpr (F::is_array) return check_array<M, I, off>(v, err, std::make_index_sequence<F::count>{});
+        else return check_element<M, I, off>(v, err);
+    };
+    if constexpr (F::is_optional) return !member || value(*member);
+    else return value(member);
+}
+
+template <class M, std::size_t Base, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(const M& m, error& err, std::index_sequence<I...>) noexcept {
+    (void)m, (void)err;  // messages without fields
+    return (check_field<M, I, Base>(m, err) && ...);
+}
+
+template <class M, std::size_t I, std::size_t Off, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, error& err) noexcept {
+    using W = typename field_t<M, I>::wire_type;
+    if constexpr (W::kind == wire_kind::record) {
+        return check_record<E, Off>(v, err, std::make_index_sequence<field_count_v<E>>{});
+    } else if constexpr (W::kind == wire_kind::text) {
+        const auto s = v.view();
+        for (std::size_t i = 0; i < s.size(); ++i)
+            if (s[i] == '\0') { err = {errc::value_out_of_range, Off + i}; return false; }
+        return true;
+    } else if constexpr (W::kind == wire_kind::tail || W::kind == wire_kind::f32le) {
+        return true;
+    } else if constexpr (std::is_enum_v<E>) {
+        if (!is_valid_enum(v)) { err = {errc::invalid_enum, Off}; return false; }
+        return true;
+    } else {
+        constexpr range valid = field_v<M, I>.valid;
+        if constexpr (W::kind == wire_kind::bits || std::is_same_v<E, bool> ||
+                      valid.min > std::int64_t{std::numeric_limits<E>::min()} ||
+                      valid.max < std::int64_t{std::numeric_limits<E>::max()}) {
+            const auto raw = static_cast<std::int64_t>(v);
+            if (raw < valid.min || raw > valid.max) { err = {errc::value_out_of_range, Off}; return false; }
+        }
+        return true;
+    }
+}
+
+template <class M, std::size_t I, std::size_t Off, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr void store_element(const E& v, std::span<std::uint8_t> out) noexcept;
+
+template <class M, std::size_t Base, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr void store_record(const M& m, std::span<std::uint8_t> out,
+                                                   std::index_sequence<I...>) noexcept;
+
+template <class M, std::size_t I, std::size_t Off, class V, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE constexpr void store_array(const V& v, std::span<std::uint8_t> out,
+                                                  std::index_sequence<K...>) noexcept {
+    (store_element<M, I, Off + K * field_t<M, I>::element_size>(v[K], out), ...);
+}
+
+template <class M, std::size_t I, std::size_t Off, class V>
+ROBOWIRE_ALWAYS_INLINE constexpr void store_value(const V& v, std::span<std::uint8_t> out) noexcept {
+    using F = field_t<M, I>;
+    if constexpr (plain_byte_array_v<M, I>) {
+        if (!std::is_constant_evaluated()) {
+            std::memcpy(out.data() + Off, v.data(), F::count);
+            return;
+        }
+    }
+    if constexpr (F::is_array) store_array<M, I, Off>(v, out, std::make_index_sequence<F::count>{});
+    else store_element<M, I, Off>(v, out);
+}
+
+template <class M, std::size_t I, std::size_t Base>
+ROBOWIRE_ALWAYS_INLINE constexpr void store_field(const M& m, std::span<std::uint8_t> out) noexcept {
+    constexpr std::size_t off = Base + field_v<M, I>.offset;
+    constexpr auto member_ptr = field_v<M, I>.member;
+    const auto& member = m.*member_ptr;
+    if constexpr (field_t<M, I>::is_optional) {
+        if (member) store_value<M, I, off>(*member, out);
+    } else {
+        store_value<M, I, off>(member, out);
+    }
+}
+
+template <class M, std::size_t Base, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr void store_record(const M& m, std::span<std::uint8_t> out,
+                                                   std::index_sequence<I...>) noexcept {
+    (void)m, (void)out;  // messages without fields
+    (store_field<M, I, Base>(m, out), ...);
+}
+
+// Writes one checked element.
+template <class M, std::size_t I, std::size_t Off, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr void store_element(const E& v, std::span<std::uint8_t> out) noexcept {
+    using W = typename field_t<M, I>::wire_type;
+    if constexpr (W::kind == wire_kind::record) {
+        store_record<E, Off>(v, out, std::make_index_sequence<field_count_v<E>>{});
+    } else if constexpr (W::kind == wire_kind::text) {
+        const auto s = v.view();
+        for (std::size_t i = 0; i < s.size(); ++i) out[Off + i] = static_cast<std::uint8_t>(s[i]);
+        for (std::size_t i = s.size(); i < text_traits<E>::size; ++i) out[Off + i] = 0;  // padding
+    } else if constexpr (W::kind == wire_kind::tail) {
+        for (std::size_t i = 0; i < v.size(); ++i) out[Off + i] = v[i];
+    } else if constexpr (W::kind == wire_kind::f32le) {
+        store_le<float>(out.data() + Off, v);
+    } else {
+        std::uint64_t raw = 0;
+        if constexpr (std::is_enum_v<E>) raw = static_cast<std::uint64_t>(static_cast<std::underlying_type_t<E>>(v));
+        else raw = static_cast<std::uint64_t>(v);
+        if constexpr (W::kind == wire_kind::bits) {
+            constexpr auto mask = static_cast<unsigned>(low_mask(W::width) << W::lo);
+            out[Off] = static_cast<std::uint8_t>((static_cast<unsigned>(out[Off]) & ~mask) |
+                                                 ((static_cast<unsigned>(raw) << W::lo) & mask));
+        } else {
+            store_le<typename W::raw_type>(out.data() + Off, static_cast<typename W::raw_type>(raw));
+        }
+    }
+}
+
+// Bytes the encoding of m takes (optional blocks present, tail length), or
+// missing_field when an optional block is present but an earlier one is not.
+template <class M, std::size_t... I>
+constexpr result<std::size_t> encoded_size(const M& m, std::index_sequence<I...>) noexcept {
+    std::size_t size = table_v<M>.min_size();
+    std::size_t first_absent = 0;
+    bool absent_seen = false;
+    bool missing = false;
+    auto one = [&](auto index) {
+        constexpr std::size_t i = decltype(index)::value;
+        constexpr const auto& f = field_v<M, i>;
+        using F = field_t<M, i>;
+        constexpr auto member_ptr = f.member;
+        if constexpr (F::is_optional) {
+            if (!(m.*member_ptr)) {
+                if (!absent_seen) { absent_seen = true; first_absent = f.offset; }
+            } else if (absent_seen) {
+                missing = true;
+            } else if (f.end() > size) {
+                size = f.end();
+            }
+        } else if constexpr (F::kind == wire_kind::tail) {
+            const std::size_t end = f.offset + (m.*member_ptr).size();
+            if (end > size) size = end;
+        }
+    };
+    (one(std::integral_constant<std::size_t, I>{}), ...);
+    (void)one;
+    if (missing) return fail(errc::missing_field, first_absent);
+    return size;
+}
+
+template <class M, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE constexpr void write_fixed(std::span<std::uint8_t> out, std::index_sequence<K...>) noexcept {
+    ((out[table_v<M>.fixed[K].offset] = table_v<M>.fixed[K].value), ...);
+}
+
+// Bytes that encoding sets to zero before writing the fields: reserved bytes
+// and bytes holding bit fields (those are or-ed in).
+template <class M>
+constexpr std::array<bool, max_size_v<M>> cleared_bytes() noexcept {
+    auto clear = reserved_bytes<M>();
+    auto bits = [&](const auto& self, const auto& f, std::size_t base) -> void {
+        using F = std::remove_cvref_t<decltype(f)>;
+        for (std::size_t k = 0; k < F::count; ++k) {
+            if constexpr (F::kind == wire_kind::bits) clear[base + f.offset + k * F::element_size] = true;
+            else if constexpr (F::kind == wire_kind::record) {
+                using E = typename F::element_type;
+                std::apply([&](const auto&... g) { (self(self, g, base + f.offset + k * F::element_size), ...); },
+                           table_v<E>.fields);
+            }
+        }
+    };
+    for_each_field<M>([&](const auto& f) { bits(bits, f, 0); });
+    return clear;
+}
+template <class M>
+inline constexpr auto cleared_bytes_v = cleared_bytes<M>();
+
+template <class M, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr void clear_bytes(std::span<std::uint8_t> out, std::index_sequence<I...>) noexcept {
+    (void)out;
+    auto one = [&](auto index) {
+        constexpr std::size_t i = decltype(index)::value;
+        if constexpr (cleared_bytes_v<M>[i]) {
+            if (i < out.size()) out[i] = 0;
+        }
+    };
+    (one(std::integral_constant<std::size_t, I>{}), ...);
+    (void)one;
+}
+
+}  // namespace robowire::detail

@@ -1,0 +1,51 @@
+// robowire/core/encode.hpp - encode a message to bytes, driven by its table.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <utility>
+
+#include "bytes.hpp"
+#include "detail/encode.hpp"
+#include "result.hpp"
+#include "table.hpp"
+
+namespace robowire {
+
+
+// Encodes m into a caller's buffer (e.g. the radio's transmit buffer);
+// returns the number of bytes written. Errors as for encode(), then
+// buffer_too_small; on an error `out` is unchanged.
+template <described M>
+[[nodiscard]] constexpr result<std::size_t> encode_to(const M& m, std::span<std::uint8_t> out) noexcept {
+    constexpr auto fields = std::make_index_sequence<detail::field_count_v<M>>{};
+    const auto size = detail::encoded_size(m, fields);
+    if (!size) return size.error();
+    error err{};
+    if (!detail::check_record<M, 0>(m, err, fields)) return err;
+    if (*size > out.size()) return fail(errc::buffer_too_small, *size);
+    const auto dst = out.first(*size);
+    detail::clear_bytes<M>(dst, std::make_index_sequence<max_size_v<M>>{});
+    detail::write_fixed<M>(dst, std::make_index_sequence<detail::fixed_count_v<M>>{});
+    if constexpr (sizeof(M) > 16) {
+        const M copy = m;  // a local cannot alias `out`: its loads need not wait behind byte stores, so wide fields merge
+        detail::store_record<M, 0>(copy, dst, fields);
+    } else {
+        detail::store_record<M, 0>(m, dst, fields);  // a few bytes: copied as they are
+    }
+    return *size;
+}
+
+// Encodes m; out-of-range values and invalid enums are errors (never truncated).
+template <described M>
+[[nodiscard]] constexpr result<bytes<max_size_v<M>>> encode(const M& m) noexcept {
+    result<bytes<max_size_v<M>>> r{std::in_place};
+    const auto n = encode_to(m, std::span<std::uint8_t>(r->data(), max_size_v<M>));
+    if (!n) { r = n.error(); return r; }
+    r->resize(*n);
+    return r;
+}
+
+}  // namespace robowire
+
