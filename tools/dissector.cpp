@@ -56,8 +56,25 @@ constexpr range full_range() noexcept {
 template <class M>
 void emit_fields(std::string& o);
 
+// The named bits of M's flag byte `field` (core/flag_bits.hpp) as Lua:
+// {lo,width,"name",{[value]="name",...}},...; empty when it has none.
+template <class M>
+std::string flag_bits_lua([[maybe_unused]] std::string_view field) {
+    std::string o;
+    if constexpr (has_flag_bits<M>) {
+        for (const flag_bit& b : flag_bits_v<M>) {
+            if (b.field != field) continue;
+            put(o, "{", num(b.lo), ",", num(b.width), ",", lua_string(b.name), ",{");
+            for (std::size_t i = 0; i < b.values.size(); ++i)
+                if (!b.values[i].empty()) put(o, "[", num(static_cast<std::int64_t>(i)), "]=", lua_string(b.values[i]), ",");
+            o += "}},";
+        }
+    }
+    return o;
+}
+
 template <class F>
-void emit_field(std::string& o, const F& f) {
+void emit_field(std::string& o, const F& f, std::string_view flag_bits = {}) {
     using W = typename F::wire_type;
     using E = typename F::element_type;
     put(o, "{n=", lua_string(f.name), ",o=", num(static_cast<std::int64_t>(f.offset)), ",k=",
@@ -81,12 +98,14 @@ void emit_field(std::string& o, const F& f) {
     }
     if (!f.unit.name.empty())
         put(o, ",u=", lua_string(f.unit.name), ",s=", real(f.unit.scale), ",a=", real(f.unit.offset));
+    if constexpr (F::kind == wire_kind::u8)
+        if (!flag_bits.empty()) put(o, ",fb={", flag_bits, "}");
     o += "},\n";
 }
 
 template <class M>
 void emit_fields(std::string& o) {
-    for_each_field<M>([&](const auto& f) { emit_field(o, f); });
+    for_each_field<M>([&](const auto& f) { emit_field(o, f, flag_bits_lua<M>(f.name)); });
 }
 
 // dir: "c" host -> device only, "n" device -> host only, "" either.

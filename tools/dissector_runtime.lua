@@ -51,6 +51,15 @@ local function declare(prefix, list)
             f.pf = scalar[f.k](abbr, f.n, base.DEC, f.e)
         end
         all_fields[#all_fields + 1] = f.pf
+        for _, b in ipairs(f.fb or {}) do -- named bits of a flag byte: {lo, width, name, values}
+            local mask = bit32.lshift(bit32.lshift(1, b[2]) - 1, b[1])
+            if b[2] == 1 then
+                b.pf = ProtoField.bool(abbr .. "." .. b[3], b[3], 8, nil, mask)
+            else
+                b.pf = ProtoField.uint8(abbr .. "." .. b[3], b[3], base.DEC, next(b[4]) and b[4] or nil, mask)
+            end
+            all_fields[#all_fields + 1] = b.pf
+        end
         if f.u then
             f.pfv = ProtoField.double(abbr .. ".value", f.n .. " [" .. f.u .. "]")
             all_fields[#all_fields + 1] = f.pfv
@@ -94,6 +103,7 @@ local function add_element(tree, tvb, f, off, len, path, index)
     local item, v
     if f.k == "u8" then
         v = r:uint(); item = tree:add(f.pf, r)
+        for _, b in ipairs(f.fb or {}) do item:add(b.pf, r) end
     elseif f.k == "i8" then
         v = r:int(); item = tree:add(f.pf, r)
     elseif f.k == "bits" then

@@ -329,6 +329,8 @@ int main(int argc, char** argv) {
     }
     try {
         app.parse(argc, argv);
+    } catch (const CLI::RuntimeError& e) {  // an extra subcommand failed; it printed why
+        return e.get_exit_code();
     } catch (const CLI::ParseError& e) {
         if (e.get_exit_code() == 0) return app.exit(e);  // --help
         std::fprintf(stderr, "error: %s (robowire --help)\n", e.what());

@@ -100,6 +100,16 @@ void collect(const M& m, const std::string& prefix, field_values& out) {
         } else {
             value(member);
         }
+        // The named bits of a flag byte (core/flag_bits.hpp), each its own field.
+        if constexpr (robowire::has_flag_bits<M> && F::kind == robowire::wire_kind::u8 && !F::is_array &&
+                      !F::is_optional)
+            for (const robowire::flag_bit& b : robowire::flag_bits_v<M>)
+                if (b.field == f.name) {
+                    std::string key;
+                    put(key, abbr, ".", b.name);
+                    const unsigned bits = (static_cast<unsigned>(member) >> b.lo) & ((1u << b.width) - 1u);
+                    out[key].push_back(real(static_cast<double>(bits)));
+                }
     });
 }
 
