@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <variant>
 
 #include "../core/decode.hpp"
 #include "../core/encode.hpp"
@@ -340,5 +341,13 @@ constexpr auto flag_bits_of(std::type_identity<set_motor_data>) {
 constexpr auto flag_bits_of(std::type_identity<set_motor_data_extended>) {
     return join_flag_bits(port_bits("brake_flags"), port_bits("lut_disable_flags"));
 }
+
+// Every host -> device command (application characteristic); one list: the
+// dispatcher, tools, tests and fuzzers use it; a new command is added here.
+using command = std::variant<set_device_name, set_motion_wakeup, set_accel_calibration, read_accel_calibration,
+                             set_motor_data, set_motor_data_extended, set_data_period, set_ramp_rates,
+                             set_motor_timeout, activate_watchdog, set_led_status, set_accel_lpf, set_current_limits,
+                             set_uart_baudrate, set_pu_port_function, enable_pid_reporting, set_servo_reference,
+                             set_pid_parameters, activate_shelf_mode, check_charger_settings>;
 
 }  // namespace robowire::buwizz3

@@ -10,13 +10,6 @@
 
 namespace robowire::buwizz3 {
 
-// Every host -> device command (application characteristic).
-using command = std::variant<set_device_name, set_motion_wakeup, set_accel_calibration, read_accel_calibration,
-                             set_motor_data, set_motor_data_extended, set_data_period, set_ramp_rates,
-                             set_motor_timeout, activate_watchdog, set_led_status, set_accel_lpf, set_current_limits,
-                             set_uart_baudrate, set_pu_port_function, enable_pid_reporting, set_servo_reference,
-                             set_pid_parameters, activate_shelf_mode, check_charger_settings>;
-
 // Every device -> host notification (application characteristic).
 using notification = std::variant<status, accel_calibration, charger_settings>;
 

@@ -14,11 +14,6 @@
 
 namespace robowire::osp {
 
-// Every OSP message.
-using message = std::variant<generic::request_device_type, generic::device_type, arm1::set_angle, obp1::request_soc,
-                             obp1::request_voltage, obp1::request_current, obp1::request_status, obp1::soc,
-                             obp1::voltage, obp1::current, obp1::status>;
-
 class decode_result;
 // Decodes one 10-byte frame (below). A template, so that nothing is
 // instantiated in a translation unit that does not call it.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <variant>
 #include <numbers>
 
 #include "../core/flag_bits.hpp"
@@ -147,5 +148,11 @@ constexpr auto flag_bits_of(std::type_identity<status>) {
                                     {"flags", 3, 1, "short_circuit", {}}}};
 }
 }  // namespace obp1
+
+// Every OSP message (one list: osp::decode, the tools, tests and fuzzers use it;
+// a new message is added here).
+using message = std::variant<generic::request_device_type, generic::device_type, arm1::set_angle, obp1::request_soc,
+                             obp1::request_voltage, obp1::request_current, obp1::request_status, obp1::soc,
+                             obp1::voltage, obp1::current, obp1::status>;
 
 }  // namespace robowire::osp
