@@ -82,6 +82,13 @@ void collect_element(const F& f, const E& e, const std::string& abbr, field_valu
     }
 }
 
+// M's named flag bits, or none.
+template <class M>
+constexpr auto flag_bits_or_none() {
+    if constexpr (robowire::has_flag_bits<M>) return robowire::flag_bits_v<M>;
+    else return std::array<robowire::flag_bit, 0>{};
+}
+
 template <class M>
 void collect(const M& m, const std::string& prefix, field_values& out) {
     robowire::for_each_field<M>([&](const auto& f) {
@@ -101,9 +108,8 @@ void collect(const M& m, const std::string& prefix, field_values& out) {
             value(member);
         }
         // The named bits of a flag byte (core/flag_bits.hpp), each its own field.
-        if constexpr (robowire::has_flag_bits<M> && F::kind == robowire::wire_kind::u8 && !F::is_array &&
-                      !F::is_optional)
-            for (const robowire::flag_bit& b : robowire::flag_bits_v<M>)
+        if constexpr (F::kind == robowire::wire_kind::u8 && !F::is_array && !F::is_optional)
+            for (const robowire::flag_bit& b : flag_bits_or_none<M>())
                 if (b.field == f.name) {
                     std::string key;
                     put(key, abbr, ".", b.name);
