@@ -43,7 +43,7 @@ template <described M>
 template <described M>
 [[nodiscard]] constexpr result<M> decode(std::span<const std::uint8_t> in) noexcept {
     result<M> r{std::in_place};  // built in place: every return below returns r
-    if (const error e = decode_into(*r, in); e.code != errc::ok) r = e;
+    if (const error e = decode_into(detail::built_value(r), in); e.code != errc::ok) r = e;
     return r;
 }
 

@@ -59,7 +59,7 @@ inline constexpr auto key_index_v = [] {
 // Makes alternative I of r's variant and decodes `in` into it, in place.
 template <std::size_t I, class Variant>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r, std::span<const std::uint8_t> in) noexcept {
-    auto& m = robowire::detail::emplace_alternative<I>(*r);
+    auto& m = robowire::detail::emplace_alternative<I>(built_value(r));
     if (const error e = decode_into(m, in); e.code != errc::ok) r = e;
 }
 template <class Variant, std::size_t... I>

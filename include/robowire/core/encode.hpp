@@ -41,9 +41,10 @@ template <described M>
 template <described M>
 [[nodiscard]] constexpr result<bytes<max_size_v<M>>> encode(const M& m) noexcept {
     result<bytes<max_size_v<M>>> r{std::in_place};
-    const auto n = encode_to(m, std::span<std::uint8_t>(r->data(), max_size_v<M>));
+    auto& b = detail::built_value(r);
+    const auto n = encode_to(m, std::span<std::uint8_t>(b.data(), max_size_v<M>));
     if (!n) { r = n.error(); return r; }
-    r->resize(*n);
+    b.resize(*n);
     return r;
 }
 

@@ -196,6 +196,14 @@ constexpr void compile_time_bad_access(errc code) noexcept {
 inline void run_time_only() noexcept {}
 }  // namespace detail
 
+template <class T> class result;
+namespace detail {
+// The value of a result that the codec itself has just built holding one:
+// no access check (at -Os the check is a call that is not folded away).
+template <class T>
+constexpr T& built_value(result<T>& r) noexcept;
+}  // namespace detail
+
 // Either a T or an error; they share storage. T must be trivially copyable
 // and trivially destructible (every value type of this library is).
 template <class T>
@@ -246,6 +254,8 @@ public:
     constexpr T value_or(U&& fallback) const& { return ok_ ? value_.v : static_cast<T>(std::forward<U>(fallback)); }
 
 private:
+    template <class U>
+    friend constexpr U& detail::built_value(result<U>& r) noexcept;
     constexpr void check(bool want_value) const noexcept(detail::access_noexcept) {
         if (ok_ == want_value) return;
         const robowire::error e = ok_ ? robowire::error{} : error_;
@@ -265,6 +275,9 @@ private:
     };
     bool ok_;
 };
+
+template <class T>
+constexpr T& detail::built_value(result<T>& r) noexcept { return r.value_.v; }
 
 // Shorthand for returning an error.
 constexpr error fail(errc code, std::size_t offset) noexcept { return error{code, offset}; }

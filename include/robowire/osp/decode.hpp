@@ -52,10 +52,32 @@ constexpr bool keys_distinct(std::index_sequence<I...>) noexcept {
             if (keys[a] == keys[b]) return false;
     return true;
 }
+// M is a 10-byte frame whose fixed bytes are exactly the markers, DEV and CMD:
+// what the shared frame check and frame writer below assume.
+template <class M>
+constexpr bool plain_frame() noexcept {
+    constexpr auto& t = table_v<M>;
+    if (t.min_size() != frame_size || t.max_input() != frame_size || t.fixed.size() != 6) return false;
+    const auto expect = fixed(static_cast<std::uint8_t>(key_of<M>() >> 8), static_cast<std::uint8_t>(key_of<M>()));
+    for (std::size_t k = 0; k < expect.size(); ++k)
+        if (t.fixed[k].offset != expect[k].offset || t.fixed[k].value != expect[k].value) return false;
+    return true;
+}
+// The four markers, in the order they are checked.
+inline constexpr fixed_byte markers[] = {
+    {0, start1, errc::bad_header}, {1, start2, errc::bad_header}, {8, end1, errc::bad_trailer}, {9, end2, errc::bad_trailer}};
+// Markers and length of any frame: the checks of decode_into<frame>, shared by every message.
+constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
+    for (const auto& m : markers)
+        if (m.offset < in.size() && in[m.offset] != m.value) return {m.code, m.offset};
+    if (in.size() < frame_size) return {errc::too_short, in.size()};
+    if (in.size() > frame_size) return {errc::too_long, frame_size};
+    return {};
+}
 // Fixed bytes checked by the frame already: makes the message and decodes its fields in place.
 template <std::size_t I>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_message(decode_result& d, std::span<const std::uint8_t> in) noexcept {
-    auto& m = robowire::detail::emplace_alternative<I>(*d);
+    auto& m = robowire::detail::emplace_alternative<I>(robowire::detail::built_value(d));
     if (const error e = robowire::detail::decode_fields(m, in); e.code != errc::ok) d = e;
 }
 template <std::size_t... I>
@@ -64,6 +86,36 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::uint1
     const bool known =
         ((key == key_of<std::variant_alternative_t<I, message>>() ? (decode_message<I>(d, in), true) : false) || ...);
     if (!known) d = fail(errc::unknown_message, 2);
+}
+// Checks m's fields and writes them into `out` (FF AA DEV CMD 00 00 00 00 55 77 written already).
+template <class M>
+ROBOWIRE_ALWAYS_INLINE constexpr error encode_fields(const M& m, std::span<std::uint8_t, frame_size> out) noexcept {
+    static_assert(plain_frame<M>(), "osp: a message must be one 10-byte frame with the markers, DEV and CMD fixed");
+    constexpr auto fields = std::make_index_sequence<robowire::detail::field_count_v<M>>{};
+    error err{};
+    if (robowire::detail::check_record<M, 0>(m, err, fields)) robowire::detail::store_record<M, 0>(m, out, fields);
+    return err;
+}
+// The frame of a message with key DEV << 8 | CMD and no parameters.
+constexpr void write_frame(std::uint8_t* out, std::uint16_t key) noexcept {
+    const std::uint8_t f[frame_size] = {start1, start2, static_cast<std::uint8_t>(key >> 8), static_cast<std::uint8_t>(key),
+                                        0, 0, 0, 0, end1, end2};
+    for (std::size_t k = 0; k < frame_size; ++k) out[k] = f[k];
+}
+// Encodes message M into a new frame.
+template <class M>
+constexpr result<bytes<frame_size>> encode_one(const M& m) noexcept {
+    result<bytes<frame_size>> r{std::in_place};
+    auto& b = robowire::detail::built_value(r);
+    b.resize(frame_size);
+    write_frame(b.data(), key_of<M>());
+    if (const error e = encode_fields(m, std::span<std::uint8_t, frame_size>(b.data(), frame_size))) r = e;
+    return r;
+}
+template <class Message, std::size_t... I>
+constexpr std::uint16_t key_at(std::size_t index, std::index_sequence<I...>) noexcept {
+    constexpr std::uint16_t keys[] = {key_of<std::variant_alternative_t<I, Message>>()...};
+    return keys[index];
 }
 }  // namespace impl
 
@@ -75,22 +127,28 @@ template <class Message>
     static_assert(impl::keys_distinct<Message>(std::make_index_sequence<std::variant_size_v<Message>>{}),
                   "osp::decode: two messages share a DEV/CMD pair (the second could never be decoded)");
     decode_result d{std::in_place};
-    std::variant_alternative_t<0, std::variant<osp::frame, Message>> f{};
-    if (const error e = robowire::decode_into(f, in); e.code != errc::ok) {
+    if (const error e = impl::check_frame(in)) {
         d = e;
         return d;
     }
-    d.frame_ = f;
-    impl::decode_by_key(d, static_cast<std::uint16_t>(f.device << 8 | f.command), in,
-                          std::make_index_sequence<std::variant_size_v<Message>>{});
+    d.frame_ = osp::frame{in[2], in[3], {in[4], in[5], in[6], in[7]}};
+    impl::decode_by_key(d, static_cast<std::uint16_t>(in[2] << 8 | in[3]), in,
+                        std::make_index_sequence<std::variant_size_v<Message>>{});
     return d;
 }
 
-// Encodes any message of the variant. (Not the core encode(variant): that
-// copies into a second buffer, which costs Cortex-M code size and stack.)
+// Encodes any message of the variant: one frame writer for all of them, then
+// the message's own fields.
 template <class Message = message>
 [[nodiscard]] constexpr result<bytes<frame_size>> encode(const std::type_identity_t<Message>& m) noexcept {
-    return std::visit([](const auto& x) -> result<bytes<frame_size>> { return robowire::encode(x); }, m);
+    constexpr auto all = std::make_index_sequence<std::variant_size_v<Message>>{};
+    result<bytes<frame_size>> r{std::in_place};
+    auto& b = robowire::detail::built_value(r);
+    b.resize(frame_size);
+    impl::write_frame(b.data(), impl::key_at<Message>(m.index(), all));
+    const auto out = std::span<std::uint8_t, frame_size>(b.data(), frame_size);
+    if (const error e = std::visit([out](const auto& x) { return impl::encode_fields(x, out); }, m)) r = e;
+    return r;
 }
 
 // Device role. Decodes `request` and calls handler(msg) for the message it
@@ -117,11 +175,11 @@ template <class Handler>
                 } else if constexpr (requires(const R& r) { r.has_value(); *r; }) {
                     const R r = handler(msg);
                     if (!r) return answer{};
-                    const auto out = robowire::encode(*r);
+                    const auto out = impl::encode_one(*r);
                     if (!out) return out.error();
                     return answer{*out};
                 } else {
-                    const auto out = robowire::encode(handler(msg));
+                    const auto out = impl::encode_one(handler(msg));
                     if (!out) return out.error();
                     return answer{*out};
                 }
