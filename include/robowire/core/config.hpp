@@ -19,6 +19,18 @@
 #define ROBOWIRE_ALWAYS_INLINE inline
 #endif
 
+// ROBOWIRE_OPTIMIZE_SIZE: 1 leaves out code that only makes robowire faster
+// (the OSP scanner's whole-frame path for large chunks: it then takes every
+// chunk byte by byte, with the same results). Default 1 when compiling with
+// -Os / -Oz. Define it to choose.
+#ifndef ROBOWIRE_OPTIMIZE_SIZE
+#if defined(__OPTIMIZE_SIZE__)
+#define ROBOWIRE_OPTIMIZE_SIZE 1
+#else
+#define ROBOWIRE_OPTIMIZE_SIZE 0
+#endif
+#endif
+
 // ROBOWIRE_ARRAY_LOOPS: 1 codes an array field (decode, encode) as one copy of
 // the element's code in a loop, 0 as one copy per element. Default 1 only when
 // optimizing for size for a core without unaligned loads (Cortex-M0/M0+), where

@@ -50,11 +50,30 @@ struct enum_entry {
 template <class E>
 inline constexpr auto enum_table_v = enum_table_of(std::type_identity<E>{});
 
+namespace detail {
+// Valid codes as a bit set when every code is below 32 (else 0: use the table).
+template <class E>
+inline constexpr std::uint32_t enum_code_mask_v = [] {
+    std::uint32_t mask = 0;
+    for (const auto& entry : enum_table_v<E>) {
+        const auto code = static_cast<std::uint64_t>(static_cast<std::underlying_type_t<E>>(entry.value));
+        if (code >= 32) return std::uint32_t{0};
+        mask |= std::uint32_t{1} << code;
+    }
+    return mask;
+}();
+}  // namespace detail
+
 template <class E>
 [[nodiscard]] constexpr bool is_valid_enum(E e) noexcept {
-    for (const auto& entry : enum_table_v<E>)
-        if (entry.value == e) return true;
-    return false;
+    if constexpr (detail::enum_code_mask_v<E> != 0) {  // one test, no table in flash
+        const auto code = static_cast<std::uint64_t>(static_cast<std::underlying_type_t<E>>(e));
+        return code < 32 && (detail::enum_code_mask_v<E> >> code & 1) != 0;
+    } else {
+        for (const auto& entry : enum_table_v<E>)
+            if (entry.value == e) return true;
+        return false;
+    }
 }
 // Name of an enumerator ("" if not a valid code).
 template <class E>

@@ -9,6 +9,7 @@
 #include <type_traits>
 #include <span>
 
+#include "../core/config.hpp"
 #include "frame.hpp"
 
 namespace robowire::osp {
@@ -28,7 +29,7 @@ public:
     constexpr void feed(std::span<const std::uint8_t> chunk, OnFrame&& on_frame) {
         const std::uint8_t* p = chunk.data();
         const std::size_t n = chunk.size();
-        if (n < frame_size) {  // short chunks (a UART's few bytes per read): byte by byte
+        if (ROBOWIRE_OPTIMIZE_SIZE || n < frame_size) {  // short chunks (a UART's few bytes per read): byte by byte
             for (std::size_t k = 0; k < n; ++k) push_byte(p[k], on_frame);
             return;
         }
