@@ -1,6 +1,6 @@
 // robowire/core/endian.hpp - little-endian loads and stores on byte spans.
 // constexpr (byte by byte in constant evaluation), alignment-safe (memcpy at
-// run time on little-endian hosts), usable in static_assert.
+// run time on little-endian cores; see bytewise_v), usable in static_assert.
 #pragma once
 
 #include <bit>
@@ -23,6 +23,16 @@ template <std::size_t N> struct uint_of_size;
 template <> struct uint_of_size<1> { using type = std::uint8_t; };
 template <> struct uint_of_size<2> { using type = std::uint16_t; };
 template <> struct uint_of_size<4> { using type = std::uint32_t; };
+
+// At run time: memcpy (one wide load or store where the core allows
+// unaligned access), except 16-bit values on cores without unaligned access
+// (Cortex-M0/M0+), where two byte accesses are smaller than a memcpy call.
+template <class T>
+inline constexpr bool bytewise_v =
+#if defined(__arm__) && !defined(__ARM_FEATURE_UNALIGNED)
+    sizeof(T) == 2 ||
+#endif
+    std::endian::native != std::endian::little;
 }  // namespace detail
 
 // GCC's -Warray-bounds (at -O3) reports loads on paths that every caller's
@@ -41,7 +51,7 @@ template <class T>
 [[nodiscard]] constexpr T load_le(const std::uint8_t* p) noexcept {
     static_assert(detail::is_wire_scalar_v<T>, "load_le: unsupported type");
     using U = typename detail::uint_of_size<sizeof(T)>::type;
-    if constexpr (std::endian::native == std::endian::little) {
+    if constexpr (!detail::bytewise_v<T>) {
         if (!std::is_constant_evaluated()) {  // one (possibly unaligned) load
             T v;
             std::memcpy(&v, p, sizeof(T));
@@ -57,7 +67,7 @@ template <class T>
 template <class T>
 constexpr void store_le(std::uint8_t* p, T v) noexcept {
     static_assert(detail::is_wire_scalar_v<T>, "store_le: unsupported type");
-    if constexpr (std::endian::native == std::endian::little) {
+    if constexpr (!detail::bytewise_v<T>) {
         if (!std::is_constant_evaluated()) {
             std::memcpy(p, &v, sizeof(T));
             return;

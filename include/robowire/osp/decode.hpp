@@ -98,9 +98,13 @@ ROBOWIRE_ALWAYS_INLINE constexpr error encode_fields(const M& m, std::span<std::
 }
 // The frame of a message with key DEV << 8 | CMD and no parameters.
 constexpr void write_frame(std::uint8_t* out, std::uint16_t key) noexcept {
-    const std::uint8_t f[frame_size] = {start1, start2, static_cast<std::uint8_t>(key >> 8), static_cast<std::uint8_t>(key),
-                                        0, 0, 0, 0, end1, end2};
-    for (std::size_t k = 0; k < frame_size; ++k) out[k] = f[k];
+    out[0] = start1;
+    out[1] = start2;
+    out[2] = static_cast<std::uint8_t>(key >> 8);
+    out[3] = static_cast<std::uint8_t>(key);
+    out[4] = out[5] = out[6] = out[7] = 0;
+    out[8] = end1;
+    out[9] = end2;
 }
 // Encodes message M into a new frame.
 template <class M>
@@ -112,11 +116,12 @@ constexpr result<bytes<frame_size>> encode_one(const M& m) noexcept {
     if (const error e = encode_fields(m, std::span<std::uint8_t, frame_size>(b.data(), frame_size))) r = e;
     return r;
 }
+// DEV << 8 | CMD of each alternative, in flash (a local array would be copied to the stack).
+template <class Message, class = std::make_index_sequence<std::variant_size_v<Message>>>
+inline constexpr std::uint16_t keys_v[1] = {};
 template <class Message, std::size_t... I>
-constexpr std::uint16_t key_at(std::size_t index, std::index_sequence<I...>) noexcept {
-    constexpr std::uint16_t keys[] = {key_of<std::variant_alternative_t<I, Message>>()...};
-    return keys[index];
-}
+inline constexpr std::uint16_t keys_v<Message, std::index_sequence<I...>>[sizeof...(I)] = {
+    key_of<std::variant_alternative_t<I, Message>>()...};
 }  // namespace impl
 
 // Decodes one 10-byte frame into whichever message its DEV and CMD name.
@@ -141,11 +146,10 @@ template <class Message>
 // the message's own fields.
 template <class Message = message>
 [[nodiscard]] constexpr result<bytes<frame_size>> encode(const std::type_identity_t<Message>& m) noexcept {
-    constexpr auto all = std::make_index_sequence<std::variant_size_v<Message>>{};
     result<bytes<frame_size>> r{std::in_place};
     auto& b = robowire::detail::built_value(r);
     b.resize(frame_size);
-    impl::write_frame(b.data(), impl::key_at<Message>(m.index(), all));
+    impl::write_frame(b.data(), impl::keys_v<Message>[m.index()]);
     const auto out = std::span<std::uint8_t, frame_size>(b.data(), frame_size);
     if (const error e = std::visit([out](const auto& x) { return impl::encode_fields(x, out); }, m)) r = e;
     return r;
