@@ -1,5 +1,6 @@
 // Array fields at run time, whether coded unrolled or as loops
-// (ROBOWIRE_ARRAY_LOOPS; the ctest tests_with_array_loops builds this with 1).
+// (ROBOWIRE_ARRAY_LOOPS; the ctest tests_optimized_for_size builds the whole
+// suite with 1 and -Os, which turns ROBOWIRE_OPTIMIZE_SIZE on).
 #include <robowire/buwizz3.hpp>
 
 #include <catch2/catch.hpp>
@@ -59,4 +60,12 @@ TEST_CASE("arrays: status records and words decoded and encoded element by eleme
     const auto back = robowire::encode(*st);
     REQUIRE(back);
     CHECK(std::equal(back->begin(), back->end(), s.begin(), s.end()));
+}
+
+TEST_CASE("ROBOWIRE_OPTIMIZE_SIZE follows -Os unless defined", "[core]") {
+#if defined(__OPTIMIZE_SIZE__)
+    STATIC_REQUIRE(ROBOWIRE_OPTIMIZE_SIZE == 1);
+#else
+    STATIC_REQUIRE(ROBOWIRE_OPTIMIZE_SIZE == 0);
+#endif
 }

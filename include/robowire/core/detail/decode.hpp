@@ -71,10 +71,14 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::ui
     if constexpr (F::is_optional) {
         if (in.size() <= off) { member.reset(); return true; }  // absent
         if (in.size() < off + F::size) { err = {errc::bad_length, off}; return false; }
-        value_t<typename F::member_type> tmp{};  // stored whole once decoded
-        if (!decode_value<M, I, off>(tmp, in, err)) return false;
-        member = tmp;
-        return true;
+        if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // decoded in place (on an error the message is unspecified)
+            return decode_value<M, I, off>(member.emplace(), in, err);
+        } else {
+            value_t<typename F::member_type> tmp{};  // stored whole once decoded: the stores merge
+            if (!decode_value<M, I, off>(tmp, in, err)) return false;
+            member = tmp;
+            return true;
+        }
     } else {
         return decode_value<M, I, off>(member, in, err);
     }
@@ -95,10 +99,14 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
     if constexpr (W::kind == wire_kind::record) {
         // Decoded into a local, then stored whole: the loads are not ordered
         // behind byte stores that might alias the input, so they merge.
-        E tmp{};
-        if (!decode_record<E, Off>(tmp, in, err, std::make_index_sequence<field_count_v<E>>{})) return false;
-        v = tmp;
-        return true;
+        if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
+            return decode_record<E, Off>(v, in, err, std::make_index_sequence<field_count_v<E>>{});
+        } else {
+            E tmp{};
+            if (!decode_record<E, Off>(tmp, in, err, std::make_index_sequence<field_count_v<E>>{})) return false;
+            v = tmp;
+            return true;
+        }
     } else if constexpr (W::kind == wire_kind::text) {
         constexpr std::size_t n = text_traits<E>::size;
         std::size_t len = 0;
