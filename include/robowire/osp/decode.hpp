@@ -106,16 +106,6 @@ constexpr void write_frame(std::uint8_t* out, std::uint16_t key) noexcept {
     out[8] = end1;
     out[9] = end2;
 }
-// Encodes message M into a new frame.
-template <class M>
-constexpr result<bytes<frame_size>> encode_one(const M& m) noexcept {
-    result<bytes<frame_size>> r{std::in_place};
-    auto& b = robowire::detail::built_value(r);
-    b.resize(frame_size);
-    write_frame(b.data(), key_of<M>());
-    if (const error e = encode_fields(m, std::span<std::uint8_t, frame_size>(b.data(), frame_size))) r = e;
-    return r;
-}
 // DEV << 8 | CMD of each alternative, in flash (a local array would be copied to the stack).
 template <class Message, class = std::make_index_sequence<std::variant_size_v<Message>>>
 inline constexpr std::uint16_t keys_v[1] = {};
@@ -163,33 +153,37 @@ template <class Message = message>
 template <class Handler>
 [[nodiscard]] constexpr result<std::optional<bytes<frame_size>>> serve(std::span<const std::uint8_t> request,
                                                                        Handler&& handler) {
-    using answer = std::optional<bytes<frame_size>>;
-    const auto d = decode(request);
-    if (!d) return d.error();
-    return std::visit(
-        [&](const auto& msg) -> result<answer> {
+    result<std::optional<bytes<frame_size>>> r{std::in_place};  // no answer (yet)
+    auto d = decode(request);
+    if (!d) {
+        r = d.error();
+        return r;
+    }
+    const auto reply = [&r](const auto& answer) {  // encoded straight into r
+        auto& out = robowire::detail::built_value(r).emplace();
+        out.resize(frame_size);
+        impl::write_frame(out.data(), impl::key_of<std::remove_cvref_t<decltype(answer)>>());
+        if (const error e = impl::encode_fields(answer, std::span<std::uint8_t, frame_size>(out.data(), frame_size))) r = e;
+    };
+    std::visit(
+        [&](const auto& msg) {
             using M = std::remove_cvref_t<decltype(msg)>;
             if constexpr (!std::is_invocable_v<Handler&, const M&>) {
-                return fail(errc::unknown_message, 2);
+                r = fail(errc::unknown_message, 2);
             } else {
                 using R = std::invoke_result_t<Handler&, const M&>;
                 if constexpr (std::is_void_v<R>) {
                     handler(msg);
-                    return answer{};
-                } else if constexpr (requires(const R& r) { r.has_value(); *r; }) {
-                    const R r = handler(msg);
-                    if (!r) return answer{};
-                    const auto out = impl::encode_one(*r);
-                    if (!out) return out.error();
-                    return answer{*out};
+                } else if constexpr (requires(const R& a) { a.has_value(); *a; }) {
+                    const R a = handler(msg);
+                    if (a) reply(*a);
                 } else {
-                    const auto out = impl::encode_one(handler(msg));
-                    if (!out) return out.error();
-                    return answer{*out};
+                    reply(handler(msg));
                 }
             }
         },
-        *d);
+        robowire::detail::built_value(d));
+    return r;
 }
 
 }  // namespace robowire::osp
