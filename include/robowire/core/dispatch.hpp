@@ -104,13 +104,16 @@ inline constexpr std::size_t variant_max_size_v = detail::max_size_of<Variant>::
 template <class... M>
 [[nodiscard]] constexpr result<bytes<variant_max_size_v<std::variant<M...>>>> encode(const std::variant<M...>& v) noexcept {
     using out_t = bytes<variant_max_size_v<std::variant<M...>>>;
-    return std::visit(
-        [](const auto& m) -> result<out_t> {
-            const auto r = robowire::encode(m);
-            if (!r) return r.error();
-            return out_t::from(*r).value();
-        },
-        v);
+    result<out_t> r{std::in_place};
+    auto& b = detail::built_value(r);  // each message is encoded straight into it
+    const auto n = std::visit(
+        [&b](const auto& m) { return encode_to(m, std::span<std::uint8_t>(b.data(), out_t::capacity())); }, v);
+    if (!n) {
+        r = n.error();
+        return r;
+    }
+    b.resize(*n);
+    return r;
 }
 
 }  // namespace robowire
