@@ -56,6 +56,35 @@ inline constexpr auto key_index_v = [] {
     return index;
 }();
 
+// The same as a list of (key, index) pairs, for ROBOWIRE_OPTIMIZE_SIZE: a
+// short search instead of 256 bytes of flash.
+template <class Variant, std::size_t KeyOffset>
+inline constexpr auto key_list_v = [] {
+    constexpr std::size_t count = std::variant_size_v<Variant>;
+    constexpr std::size_t keyed = [] {
+        std::size_t n = 0;
+        for (std::size_t k = 0; k < 256; ++k) n += key_index_v<Variant, KeyOffset>[k] != count;
+        return n;
+    }();
+    std::array<std::array<std::uint8_t, 2>, keyed> list{};
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < 256; ++k)
+        if (key_index_v<Variant, KeyOffset>[k] != count)
+            list[n++] = {static_cast<std::uint8_t>(k), key_index_v<Variant, KeyOffset>[k]};
+    return list;
+}();
+// Index of the alternative whose key is `key` (variant_size: none).
+template <class Variant, std::size_t KeyOffset>
+constexpr std::size_t index_of_key(std::uint8_t key) noexcept {
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
+        for (const auto& entry : key_list_v<Variant, KeyOffset>)
+            if (entry[0] == key) return entry[1];
+        return std::variant_size_v<Variant>;
+    } else {
+        return key_index_v<Variant, KeyOffset>[key];
+    }
+}
+
 // Makes alternative I of r's variant and decodes `in` into it, in place.
 template <std::size_t I, class Variant>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r, std::span<const std::uint8_t> in) noexcept {
@@ -78,7 +107,7 @@ template <class Variant, std::size_t KeyOffset = 0>
     result<Variant> r{std::in_place};
     if (in.size() <= KeyOffset) {
         r = fail(errc::too_short, in.size());
-    } else if (const std::size_t index = detail::key_index_v<Variant, KeyOffset>[in[KeyOffset]];
+    } else if (const std::size_t index = detail::index_of_key<Variant, KeyOffset>(in[KeyOffset]);
                index == std::variant_size_v<Variant>) {
         r = fail(errc::unknown_message, KeyOffset);
     } else {
