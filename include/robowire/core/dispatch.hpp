@@ -27,6 +27,19 @@ ROBOWIRE_ALWAYS_INLINE constexpr auto& emplace_alternative(Variant& v) noexcept 
     return *std::get_if<I>(&v);
 }
 
+// Calls f(x) for the alternative x that v holds (nothing if v is valueless):
+// one compare per alternative. Cheaper to compile than std::visit, which
+// instantiates a table of functions and checks every visitor result type.
+template <class Variant, class F, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr void visit_held(Variant& v, F&& f, std::index_sequence<I...>) {
+    const std::size_t held = v.index();
+    (void)((held == I ? (f(*std::get_if<I>(&v)), true) : false) || ...);
+}
+template <class Variant, class F>
+ROBOWIRE_ALWAYS_INLINE constexpr void visit_held(Variant& v, F&& f) {
+    visit_held(v, f, std::make_index_sequence<std::variant_size_v<std::remove_const_t<Variant>>>{});
+}
+
 // Not constexpr: reached at compile time, it is the compile error (two
 // alternatives of a variant have the same key: the second could never be decoded).
 inline void variant_alternatives_share_a_key(std::string_view /*first_alternative*/, int /*key*/) noexcept {}
@@ -135,13 +148,10 @@ template <class... M>
     using out_t = bytes<variant_max_size_v<std::variant<M...>>>;
     result<out_t> r{std::in_place};
     auto& b = detail::built_value(r);  // each message is encoded straight into it
-    const auto n = std::visit(
-        [&b](const auto& m) { return encode_to(m, std::span<std::uint8_t>(b.data(), out_t::capacity())); }, v);
-    if (!n) {
-        r = n.error();
-        return r;
-    }
-    b.resize(*n);
+    result<std::size_t> n = fail(errc::unknown_message, 0);  // stays so only for a valueless variant
+    detail::visit_held(v, [&](const auto& m) { n = encode_to(m, std::span<std::uint8_t>(b.data(), out_t::capacity())); });
+    if (n) b.resize(*n);
+    else r = n.error();
     return r;
 }
 

@@ -141,7 +141,9 @@ template <class Message = message>
     b.resize(frame_size);
     impl::write_frame(b.data(), impl::keys_v<Message>[m.index()]);
     const auto out = std::span<std::uint8_t, frame_size>(b.data(), frame_size);
-    if (const error e = std::visit([out](const auto& x) { return impl::encode_fields(x, out); }, m)) r = e;
+    robowire::detail::visit_held(m, [&](const auto& x) {
+        if (const error e = impl::encode_fields(x, out)) r = e;
+    });
     return r;
 }
 
@@ -165,8 +167,8 @@ template <class Handler>
         impl::write_frame(out.data(), impl::key_of<std::remove_cvref_t<decltype(answer)>>());
         if (const error e = impl::encode_fields(answer, std::span<std::uint8_t, frame_size>(out.data(), frame_size))) r = e;
     };
-    std::visit(
-        [&](const auto& msg) {
+    robowire::detail::visit_held(
+        robowire::detail::built_value(d), [&](const auto& msg) {
             using M = std::remove_cvref_t<decltype(msg)>;
             if constexpr (!std::is_invocable_v<Handler&, const M&>) {
                 r = fail(errc::unknown_message, 2);
@@ -181,8 +183,7 @@ template <class Handler>
                     reply(handler(msg));
                 }
             }
-        },
-        robowire::detail::built_value(d));
+        });
     return r;
 }
 
