@@ -93,9 +93,18 @@ template <class E>
 template <class M>
 concept described = requires { table_of(std::type_identity<M>{}); };
 
-// The table of a message or record type.
+namespace detail {
+template <class M>
+constexpr bool members_match() noexcept {
+    constexpr auto t = table_of(std::type_identity<M>{});
+    return aggregate_has_members<M, decltype(t)::field_count + t.members_not_on_wire>();
+}
+}  // namespace detail
+
+// The table of a message or record type, checked once, at compile time.
 template <described M>
-inline constexpr auto table_v = detail::checked_table(table_of(std::type_identity<M>{}));  // checked once, at compile time
+inline constexpr auto table_v =
+    detail::checked_table(table_of(std::type_identity<M>{}), std::bool_constant<detail::members_match<M>()>{});
 
 // One field: name, member, byte offset, wire type, valid raw range, unit.
 // The member may be a scalar, an enum, bool, text<N>, bytes<N> (tail), a

@@ -35,17 +35,27 @@ template <class M, std::size_t... I>
 constexpr bool initialisable_with(std::index_sequence<I...>) noexcept {
     return requires { M{((void)I, any_member{})...}; };
 }
-// Members of aggregate M (0 when M is not an aggregate).
+// Members of aggregate M (0 when M is not an aggregate). Used only to word
+// the error below: it tries every count up to the answer.
 template <class M, std::size_t N = 0>
 constexpr std::size_t aggregate_member_count() noexcept {
     if constexpr (!std::is_aggregate_v<M>) return 0;
     else if constexpr (N >= 64 || !initialisable_with<M>(std::make_index_sequence<N + 1>{})) return N;
     else return aggregate_member_count<M, N + 1>();
 }
+// Aggregate M has exactly N members (true when M is not an aggregate): two tries.
+template <class M, std::size_t N>
+constexpr bool aggregate_has_members() noexcept {
+    if constexpr (!std::is_aggregate_v<M>) return true;
+    else return initialisable_with<M>(std::make_index_sequence<N>{}) &&
+                !initialisable_with<M>(std::make_index_sequence<N + 1>{});
+}
 
-// Checks a message or record table; returns it unchanged.
-template <class Table>
-constexpr const Table& checked_table(const Table& t) noexcept {
+// Checks a message or record table; returns it unchanged. MembersMatch:
+// every struct member is on the wire (a field) or declared as not on it
+// (members_not_on_wire), worked out by the caller from the same table.
+template <class Table, bool MembersMatch>
+constexpr const Table& checked_table(const Table& t, std::bool_constant<MembersMatch>) noexcept {
     std::size_t prev_offset = 0, end = 0;
     std::size_t bits_byte = static_cast<std::size_t>(-1);
     unsigned bits_used = 0;
@@ -73,10 +83,9 @@ constexpr const Table& checked_table(const Table& t) noexcept {
     });
     for (const auto& b : t.fixed)
         if (limit != 0 && b.offset >= limit) table_fixed_byte_beyond_message_size(t.name, b.offset);
-    // Every struct member is on the wire (a field) or declared as not on it.
-    constexpr std::size_t members = aggregate_member_count<typename Table::message_type>();
-    if (members != 0 && members != Table::field_count + t.members_not_on_wire)
-        table_leaves_struct_members_without_field(t.name, members, Table::field_count + t.members_not_on_wire);
+    if constexpr (!MembersMatch)
+        table_leaves_struct_members_without_field(t.name, aggregate_member_count<typename Table::message_type>(),
+                                                  Table::field_count + t.members_not_on_wire);
     return t;
 }
 
