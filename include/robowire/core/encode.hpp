@@ -26,7 +26,7 @@ template <described M>
     if (!detail::check_record<M, 0>(m, err, fields)) return err;
     if (*size > out.size()) return fail(errc::buffer_too_small, *size);
     const auto dst = out.first(*size);
-    detail::clear_bytes<M>(dst, std::make_index_sequence<max_size_v<M>>{});
+    detail::clear_bytes<M>(dst);
     detail::write_fixed<M>(dst, std::make_index_sequence<detail::fixed_count_v<M>>{});
     if constexpr (sizeof(M) > 16) {
         const M copy = m;  // a local cannot alias `out`: its loads need not wait behind byte stores, so wide fields merge

@@ -231,17 +231,30 @@ constexpr std::array<bool, max_size_v<M>> cleared_bytes() noexcept {
 template <class M>
 inline constexpr auto cleared_bytes_v = cleared_bytes<M>();
 
-template <class M, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr void clear_bytes(std::span<std::uint8_t> out, std::index_sequence<I...>) noexcept {
+// The offsets of those bytes, in order.
+template <class M>
+inline constexpr auto cleared_offsets_v = [] {
+    constexpr std::size_t n = [] {
+        std::size_t k = 0;
+        for (bool c : cleared_bytes_v<M>) k += c;
+        return k;
+    }();
+    std::array<std::size_t, n> offsets{};
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < cleared_bytes_v<M>.size(); ++i)
+        if (cleared_bytes_v<M>[i]) offsets[k++] = i;
+    return offsets;
+}();
+
+// Zeroes the cleared bytes that `out` has (one store per byte).
+template <class M, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE constexpr void clear_bytes(std::span<std::uint8_t> out, std::index_sequence<K...>) noexcept {
     (void)out;
-    auto one = [&](auto index) {
-        constexpr std::size_t i = decltype(index)::value;
-        if constexpr (cleared_bytes_v<M>[i]) {
-            if (i < out.size()) out[i] = 0;
-        }
-    };
-    (one(std::integral_constant<std::size_t, I>{}), ...);
-    (void)one;
+    ((cleared_offsets_v<M>[K] < out.size() ? (void)(out[cleared_offsets_v<M>[K]] = 0) : void()), ...);
+}
+template <class M>
+ROBOWIRE_ALWAYS_INLINE constexpr void clear_bytes(std::span<std::uint8_t> out) noexcept {
+    clear_bytes<M>(out, std::make_index_sequence<cleared_offsets_v<M>.size()>{});
 }
 
 }  // namespace robowire::detail
