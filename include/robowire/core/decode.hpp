@@ -33,7 +33,7 @@ template <described M>
     if (in.size() > max) return fail(errc::too_long, max);
     error err{};
     const auto known = in.size() > extent ? in.first(extent) : in;
-    if (!detail::decode_record<M, 0>(out, known, err, std::make_index_sequence<detail::field_count_v<M>>{})) return err;
+    if (!detail::decode_record<M>(out, known, 0, err, std::make_index_sequence<detail::field_count_v<M>>{})) return err;
     if constexpr (detail::reports_trailing<M>) out.ignored_trailing_bytes = in.size() - known.size();
     return err;
 }

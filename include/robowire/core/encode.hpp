@@ -23,16 +23,16 @@ template <described M>
     const auto size = detail::encoded_size(m, fields);
     if (!size) return size.error();
     error err{};
-    if (!detail::check_record<M, 0>(m, err, fields)) return err;
+    if (!detail::check_record<M>(m, 0, err, fields)) return err;
     if (*size > out.size()) return fail(errc::buffer_too_small, *size);
     const auto dst = out.first(*size);
     detail::clear_bytes<M>(dst);
     detail::write_fixed<M>(dst, std::make_index_sequence<detail::fixed_count_v<M>>{});
     if constexpr (sizeof(M) > 16) {
         const M copy = m;  // a local cannot alias `out`: its loads need not wait behind byte stores, so wide fields merge
-        detail::store_record<M, 0>(copy, dst, fields);
+        detail::store_record<M>(copy, dst, 0, fields);
     } else {
-        detail::store_record<M, 0>(m, dst, fields);  // a few bytes: copied as they are
+        detail::store_record<M>(m, dst, 0, fields);  // a few bytes: copied as they are
     }
     return *size;
 }

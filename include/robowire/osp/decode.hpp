@@ -93,7 +93,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr error encode_fields(const M& m, std::span<std::
     static_assert(plain_frame<M>(), "osp: a message must be one 10-byte frame with the markers, DEV and CMD fixed");
     constexpr auto fields = std::make_index_sequence<robowire::detail::field_count_v<M>>{};
     error err{};
-    if (robowire::detail::check_record<M, 0>(m, err, fields)) robowire::detail::store_record<M, 0>(m, out, fields);
+    if (robowire::detail::check_record<M>(m, 0, err, fields)) robowire::detail::store_record<M>(m, out, 0, fields);
     return err;
 }
 // The frame of a message with key DEV << 8 | CMD and no parameters.

@@ -21,117 +21,119 @@
 
 namespace robowire::detail {
 
-// ---- decode: every offset and range below is a template constant
+// ---- decode: ranges, sizes and kinds are template constants; byte offsets
+// are arguments (constants again once inlined), so that each field is
+// instantiated once, not once per array element or record position.
 
-template <class M, std::size_t I, std::size_t Off, class E>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::uint8_t> in, error& err) noexcept;
+template <class M, std::size_t I, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::uint8_t> in, std::size_t off,
+                                                     error& err) noexcept;
 
-template <class M, std::size_t Base, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, error& err,
+template <class M, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, std::size_t base, error& err,
                                                     std::index_sequence<I...>) noexcept;
 
-template <class M, std::size_t I, std::size_t Off, class V, std::size_t... K>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_array(V& v, std::span<const std::uint8_t> in, error& err,
+template <class M, std::size_t I, class V, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_array(V& v, std::span<const std::uint8_t> in, std::size_t off, error& err,
                                                    std::index_sequence<K...>) noexcept {
+    constexpr std::size_t es = field_t<M, I>::element_size;
     if constexpr (ROBOWIRE_ARRAY_LOOPS && sizeof...(K) >= 2) {
-        if (!std::is_constant_evaluated()) {  // element k decoded from the input shifted by k elements
-            constexpr std::size_t es = field_t<M, I>::element_size;
-            for (std::size_t k = 0; k < sizeof...(K); ++k) {
-                if (!decode_element<M, I, Off>(v[k], in.subspan(k * es), err)) {
-                    err.offset += k * es;
-                    return false;
-                }
-            }
+        if (!std::is_constant_evaluated()) {  // one copy of the element's code, in a loop
+            for (std::size_t k = 0; k < sizeof...(K); ++k)
+                if (!decode_element<M, I>(v[k], in, off + k * es, err)) return false;
             return true;
         }
     }
-    return (decode_element<M, I, Off + K * field_t<M, I>::element_size>(v[K], in, err) && ...);
+    return (decode_element<M, I>(v[K], in, off + K * es, err) && ...);
 }
 
-template <class M, std::size_t I, std::size_t Off, class V>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_value(V& v, std::span<const std::uint8_t> in, error& err) noexcept {
+template <class M, std::size_t I, class V>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_value(V& v, std::span<const std::uint8_t> in, std::size_t off,
+                                                   error& err) noexcept {
     using F = field_t<M, I>;
     if constexpr (plain_byte_array_v<M, I>) {
         if (!std::is_constant_evaluated()) {
-            std::memcpy(v.data(), in.data() + Off, F::count);
+            std::memcpy(v.data(), in.data() + off, F::count);
             return true;
         }
     }
-    if constexpr (F::is_array) return decode_array<M, I, Off>(v, in, err, std::make_index_sequence<F::count>{});
-    else return decode_element<M, I, Off>(v, in, err);
+    if constexpr (F::is_array) return decode_array<M, I>(v, in, off, err, std::make_index_sequence<F::count>{});
+    else return decode_element<M, I>(v, in, off, err);
 }
 
-template <class M, std::size_t I, std::size_t Base>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::uint8_t> in, error& err) noexcept {
+template <class M, std::size_t I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::uint8_t> in, std::size_t base,
+                                                   error& err) noexcept {
     constexpr const auto& f = field_v<M, I>;
     using F = field_t<M, I>;
-    constexpr std::size_t off = Base + f.offset;
+    const std::size_t off = base + f.offset;
     constexpr auto member_ptr = f.member;
     auto& member = m.*member_ptr;
     if constexpr (F::is_optional) {
         if (in.size() <= off) { member.reset(); return true; }  // absent
         if (in.size() < off + F::size) { err = {errc::bad_length, off}; return false; }
         if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // decoded in place (on an error the message is unspecified)
-            return decode_value<M, I, off>(member.emplace(), in, err);
+            return decode_value<M, I>(member.emplace(), in, off, err);
         } else {
             value_t<typename F::member_type> tmp{};  // stored whole once decoded: the stores merge
-            if (!decode_value<M, I, off>(tmp, in, err)) return false;
+            if (!decode_value<M, I>(tmp, in, off, err)) return false;
             member = tmp;
             return true;
         }
     } else {
-        return decode_value<M, I, off>(member, in, err);
+        return decode_value<M, I>(member, in, off, err);
     }
 }
 
-template <class M, std::size_t Base, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, error& err,
+template <class M, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, std::size_t base, error& err,
                                                     std::index_sequence<I...>) noexcept {
-    (void)m, (void)in, (void)err;  // messages without fields
-    return (decode_field<M, I, Base>(m, in, err) && ...);
+    (void)m, (void)in, (void)base, (void)err;  // messages without fields
+    return (decode_field<M, I>(m, in, base, err) && ...);
 }
 
-template <class M, std::size_t I, std::size_t Off, class E>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::uint8_t> in, error& err) noexcept {
+template <class M, std::size_t I, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::uint8_t> in, std::size_t off,
+                                                     error& err) noexcept {
     constexpr const auto& f = field_v<M, I>;
     using F = field_t<M, I>;
     using W = typename F::wire_type;
     if constexpr (W::kind == wire_kind::record) {
-        // Decoded into a local, then stored whole: the loads are not ordered
-        // behind byte stores that might alias the input, so they merge.
         if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
-            return decode_record<E, Off>(v, in, err, std::make_index_sequence<field_count_v<E>>{});
+            return decode_record<E>(v, in, off, err, std::make_index_sequence<field_count_v<E>>{});
         } else {
+            // Decoded into a local, then stored whole: the loads are not ordered
+            // behind byte stores that might alias the input, so they merge.
             E tmp{};
-            if (!decode_record<E, Off>(tmp, in, err, std::make_index_sequence<field_count_v<E>>{})) return false;
+            if (!decode_record<E>(tmp, in, off, err, std::make_index_sequence<field_count_v<E>>{})) return false;
             v = tmp;
             return true;
         }
     } else if constexpr (W::kind == wire_kind::text) {
         constexpr std::size_t n = text_traits<E>::size;
         std::size_t len = 0;
-        while (len < n && in[Off + len] != 0) ++len;
+        while (len < n && in[off + len] != 0) ++len;
         for (std::size_t i = len; i < n; ++i)
-            if (in[Off + i] != 0) { err = {errc::bad_padding, Off + i}; return false; }
+            if (in[off + i] != 0) { err = {errc::bad_padding, off + i}; return false; }
         std::array<char, n> chars{};
-        for (std::size_t i = 0; i < len; ++i) chars[i] = static_cast<char>(in[Off + i]);
+        for (std::size_t i = 0; i < len; ++i) chars[i] = static_cast<char>(in[off + i]);
         v.assign(std::string_view(chars.data(), len));
         return true;
     } else if constexpr (W::kind == wire_kind::tail) {
-        const std::size_t end = in.size() < Off + F::size ? in.size() : Off + F::size;
+        const std::size_t end = in.size() < off + F::size ? in.size() : off + F::size;
         v.clear();
-        (void)v.append(in.subspan(Off, end > Off ? end - Off : 0));
+        (void)v.append(in.subspan(off, end > off ? end - off : 0));
         return true;
     } else if constexpr (W::kind == wire_kind::f32le) {
-        v = load_le<float>(in.data() + Off);
+        v = load_le<float>(in.data() + off);
         return true;
     } else {
         std::int64_t raw = 0;
-        if constexpr (W::kind == wire_kind::bits) raw = get_bits(in[Off], W::lo, W::width);
-        else raw = load_le<typename W::raw_type>(in.data() + Off);
+        if constexpr (W::kind == wire_kind::bits) raw = get_bits(in[off], W::lo, W::width);
+        else raw = load_le<typename W::raw_type>(in.data() + off);
         if constexpr (std::is_enum_v<E>) {
             const auto e = static_cast<E>(raw);
-            if (!is_valid_enum(e)) { err = {errc::invalid_enum, Off}; return false; }
+            if (!is_valid_enum(e)) { err = {errc::invalid_enum, off}; return false; }
             v = e;
         } else {
             constexpr range valid = f.valid;
@@ -140,7 +142,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
                 else return range{std::numeric_limits<typename W::raw_type>::min(), std::numeric_limits<typename W::raw_type>::max()};
             }();
             if constexpr (valid.min > full.min || valid.max < full.max) {
-                if (raw < valid.min || raw > valid.max) { err = {errc::value_out_of_range, Off}; return false; }
+                if (raw < valid.min || raw > valid.max) { err = {errc::value_out_of_range, off}; return false; }
             }
             if constexpr (std::is_same_v<E, bool>) v = raw != 0;
             else v = static_cast<E>(raw);
@@ -166,8 +168,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr error check_fixed(std::span<const std::uint8_t>
 template <described M>
 ROBOWIRE_ALWAYS_INLINE constexpr error decode_fields(M& out, std::span<const std::uint8_t> in) noexcept {
     error err{};
-    (void)decode_record<M, 0>(out, in.first(table_v<M>.max_size()), err,
-                              std::make_index_sequence<field_count_v<M>>{});
+    (void)decode_record<M>(out, in.first(table_v<M>.max_size()), 0, err, std::make_index_sequence<field_count_v<M>>{});
     return err;
 }
 

@@ -23,63 +23,64 @@ namespace robowire::detail {
 // ---- encode, in two passes: check every field (the first error wins), then
 // write them all without a branch, so that the stores can merge.
 
-template <class M, std::size_t I, std::size_t Off, class E>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, error& err) noexcept;
+template <class M, std::size_t I, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off, error& err) noexcept;
 
-template <class M, std::size_t Base, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(const M& m, error& err, std::index_sequence<I...>) noexcept;
+template <class M, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(const M& m, std::size_t base, error& err,
+                                                   std::index_sequence<I...>) noexcept;
 
-template <class M, std::size_t I, std::size_t Off, class V, std::size_t... K>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_array(const V& v, error& err, std::index_sequence<K...>) noexcept {
+template <class M, std::size_t I, class V, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_array(const V& v, std::size_t off, error& err,
+                                                  std::index_sequence<K...>) noexcept {
+    constexpr std::size_t es = field_t<M, I>::element_size;
     if constexpr (ROBOWIRE_ARRAY_LOOPS && sizeof...(K) >= 2) {
         if (!std::is_constant_evaluated()) {
-            constexpr std::size_t es = field_t<M, I>::element_size;
-            for (std::size_t k = 0; k < sizeof...(K); ++k) {
-                if (!check_element<M, I, Off>(v[k], err)) {
-                    err.offset += k * es;
-                    return false;
-                }
-            }
+            for (std::size_t k = 0; k < sizeof...(K); ++k)
+                if (!check_element<M, I>(v[k], off + k * es, err)) return false;
             return true;
         }
     }
-    return (check_element<M, I, Off + K * field_t<M, I>::element_size>(v[K], err) && ...);
+    return (check_element<M, I>(v[K], off + K * es, err) && ...);
 }
 
-template <class M, std::size_t I, std::size_t Base>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_field(const M& m, error& err) noexcept {
+template <class M, std::size_t I, class V>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_value(const V& v, std::size_t off, error& err) noexcept {
     using F = field_t<M, I>;
-    constexpr std::size_t off = Base + field_v<M, I>.offset;
+    if constexpr (F::is_array) return check_array<M, I>(v, off, err, std::make_index_sequence<F::count>{});
+    else return check_element<M, I>(v, off, err);
+}
+
+template <class M, std::size_t I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_field(const M& m, std::size_t base, error& err) noexcept {
+    const std::size_t off = base + field_v<M, I>.offset;
     constexpr auto member_ptr = field_v<M, I>.member;
     const auto& member = m.*member_ptr;
-    auto value = [&](const auto& v) {
-        if constexpr (F::is_array) return check_array<M, I, off>(v, err, std::make_index_sequence<F::count>{});
-        else return check_element<M, I, off>(v, err);
-    };
-    if constexpr (F::is_optional) return !member || value(*member);
-    else return value(member);
+    if constexpr (field_t<M, I>::is_optional) return !member || check_value<M, I>(*member, off, err);
+    else return check_value<M, I>(member, off, err);
 }
 
-template <class M, std::size_t Base, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(const M& m, error& err, std::index_sequence<I...>) noexcept {
-    (void)m, (void)err;  // messages without fields
-    return (check_field<M, I, Base>(m, err) && ...);
+template <class M, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(const M& m, std::size_t base, error& err,
+                                                   std::index_sequence<I...>) noexcept {
+    (void)m, (void)base, (void)err;  // messages without fields
+    return (check_field<M, I>(m, base, err) && ...);
 }
 
-template <class M, std::size_t I, std::size_t Off, class E>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, error& err) noexcept {
+template <class M, std::size_t I, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off, error& err) noexcept {
     using W = typename field_t<M, I>::wire_type;
     if constexpr (W::kind == wire_kind::record) {
-        return check_record<E, Off>(v, err, std::make_index_sequence<field_count_v<E>>{});
+        return check_record<E>(v, off, err, std::make_index_sequence<field_count_v<E>>{});
     } else if constexpr (W::kind == wire_kind::text) {
         const auto s = v.view();
         for (std::size_t i = 0; i < s.size(); ++i)
-            if (s[i] == '\0') { err = {errc::value_out_of_range, Off + i}; return false; }
+            if (s[i] == '\0') { err = {errc::value_out_of_range, off + i}; return false; }
         return true;
     } else if constexpr (W::kind == wire_kind::tail || W::kind == wire_kind::f32le) {
         return true;
     } else if constexpr (std::is_enum_v<E>) {
-        if (!is_valid_enum(v)) { err = {errc::invalid_enum, Off}; return false; }
+        if (!is_valid_enum(v)) { err = {errc::invalid_enum, off}; return false; }
         return true;
     } else {
         constexpr range valid = field_v<M, I>.valid;
@@ -87,88 +88,88 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, error& err) noex
                       valid.min > std::int64_t{std::numeric_limits<E>::min()} ||
                       valid.max < std::int64_t{std::numeric_limits<E>::max()}) {
             const auto raw = static_cast<std::int64_t>(v);
-            if (raw < valid.min || raw > valid.max) { err = {errc::value_out_of_range, Off}; return false; }
+            if (raw < valid.min || raw > valid.max) { err = {errc::value_out_of_range, off}; return false; }
         }
         return true;
     }
 }
 
-template <class M, std::size_t I, std::size_t Off, class E>
-ROBOWIRE_ALWAYS_INLINE constexpr void store_element(const E& v, std::span<std::uint8_t> out) noexcept;
+template <class M, std::size_t I, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr void store_element(const E& v, std::span<std::uint8_t> out, std::size_t off) noexcept;
 
-template <class M, std::size_t Base, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr void store_record(const M& m, std::span<std::uint8_t> out,
+template <class M, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr void store_record(const M& m, std::span<std::uint8_t> out, std::size_t base,
                                                    std::index_sequence<I...>) noexcept;
 
-template <class M, std::size_t I, std::size_t Off, class V, std::size_t... K>
-ROBOWIRE_ALWAYS_INLINE constexpr void store_array(const V& v, std::span<std::uint8_t> out,
+template <class M, std::size_t I, class V, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE constexpr void store_array(const V& v, std::span<std::uint8_t> out, std::size_t off,
                                                   std::index_sequence<K...>) noexcept {
+    constexpr std::size_t es = field_t<M, I>::element_size;
     if constexpr (ROBOWIRE_ARRAY_LOOPS && sizeof...(K) >= 2) {
-        if (!std::is_constant_evaluated()) {  // element k written to the output shifted by k elements
-            constexpr std::size_t es = field_t<M, I>::element_size;
-            for (std::size_t k = 0; k < sizeof...(K); ++k) store_element<M, I, Off>(v[k], out.subspan(k * es));
+        if (!std::is_constant_evaluated()) {
+            for (std::size_t k = 0; k < sizeof...(K); ++k) store_element<M, I>(v[k], out, off + k * es);
             return;
         }
     }
-    (store_element<M, I, Off + K * field_t<M, I>::element_size>(v[K], out), ...);
+    (store_element<M, I>(v[K], out, off + K * es), ...);
 }
 
-template <class M, std::size_t I, std::size_t Off, class V>
-ROBOWIRE_ALWAYS_INLINE constexpr void store_value(const V& v, std::span<std::uint8_t> out) noexcept {
+template <class M, std::size_t I, class V>
+ROBOWIRE_ALWAYS_INLINE constexpr void store_value(const V& v, std::span<std::uint8_t> out, std::size_t off) noexcept {
     using F = field_t<M, I>;
     if constexpr (plain_byte_array_v<M, I>) {
         if (!std::is_constant_evaluated()) {
-            std::memcpy(out.data() + Off, v.data(), F::count);
+            std::memcpy(out.data() + off, v.data(), F::count);
             return;
         }
     }
-    if constexpr (F::is_array) store_array<M, I, Off>(v, out, std::make_index_sequence<F::count>{});
-    else store_element<M, I, Off>(v, out);
+    if constexpr (F::is_array) store_array<M, I>(v, out, off, std::make_index_sequence<F::count>{});
+    else store_element<M, I>(v, out, off);
 }
 
-template <class M, std::size_t I, std::size_t Base>
-ROBOWIRE_ALWAYS_INLINE constexpr void store_field(const M& m, std::span<std::uint8_t> out) noexcept {
-    constexpr std::size_t off = Base + field_v<M, I>.offset;
+template <class M, std::size_t I>
+ROBOWIRE_ALWAYS_INLINE constexpr void store_field(const M& m, std::span<std::uint8_t> out, std::size_t base) noexcept {
+    const std::size_t off = base + field_v<M, I>.offset;
     constexpr auto member_ptr = field_v<M, I>.member;
     const auto& member = m.*member_ptr;
     if constexpr (field_t<M, I>::is_optional) {
-        if (member) store_value<M, I, off>(*member, out);
+        if (member) store_value<M, I>(*member, out, off);
     } else {
-        store_value<M, I, off>(member, out);
+        store_value<M, I>(member, out, off);
     }
 }
 
-template <class M, std::size_t Base, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr void store_record(const M& m, std::span<std::uint8_t> out,
+template <class M, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr void store_record(const M& m, std::span<std::uint8_t> out, std::size_t base,
                                                    std::index_sequence<I...>) noexcept {
-    (void)m, (void)out;  // messages without fields
-    (store_field<M, I, Base>(m, out), ...);
+    (void)m, (void)out, (void)base;  // messages without fields
+    (store_field<M, I>(m, out, base), ...);
 }
 
 // Writes one checked element.
-template <class M, std::size_t I, std::size_t Off, class E>
-ROBOWIRE_ALWAYS_INLINE constexpr void store_element(const E& v, std::span<std::uint8_t> out) noexcept {
+template <class M, std::size_t I, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr void store_element(const E& v, std::span<std::uint8_t> out, std::size_t off) noexcept {
     using W = typename field_t<M, I>::wire_type;
     if constexpr (W::kind == wire_kind::record) {
-        store_record<E, Off>(v, out, std::make_index_sequence<field_count_v<E>>{});
+        store_record<E>(v, out, off, std::make_index_sequence<field_count_v<E>>{});
     } else if constexpr (W::kind == wire_kind::text) {
         const auto s = v.view();
-        for (std::size_t i = 0; i < s.size(); ++i) out[Off + i] = static_cast<std::uint8_t>(s[i]);
-        for (std::size_t i = s.size(); i < text_traits<E>::size; ++i) out[Off + i] = 0;  // padding
+        for (std::size_t i = 0; i < s.size(); ++i) out[off + i] = static_cast<std::uint8_t>(s[i]);
+        for (std::size_t i = s.size(); i < text_traits<E>::size; ++i) out[off + i] = 0;  // padding
     } else if constexpr (W::kind == wire_kind::tail) {
-        for (std::size_t i = 0; i < v.size(); ++i) out[Off + i] = v[i];
+        for (std::size_t i = 0; i < v.size(); ++i) out[off + i] = v[i];
     } else if constexpr (W::kind == wire_kind::f32le) {
-        store_le<float>(out.data() + Off, v);
+        store_le<float>(out.data() + off, v);
     } else {
         std::uint64_t raw = 0;
         if constexpr (std::is_enum_v<E>) raw = static_cast<std::uint64_t>(static_cast<std::underlying_type_t<E>>(v));
         else raw = static_cast<std::uint64_t>(v);
         if constexpr (W::kind == wire_kind::bits) {
             constexpr auto mask = static_cast<unsigned>(low_mask(W::width) << W::lo);
-            out[Off] = static_cast<std::uint8_t>((static_cast<unsigned>(out[Off]) & ~mask) |
+            out[off] = static_cast<std::uint8_t>((static_cast<unsigned>(out[off]) & ~mask) |
                                                  ((static_cast<unsigned>(raw) << W::lo) & mask));
         } else {
-            store_le<typename W::raw_type>(out.data() + Off, static_cast<typename W::raw_type>(raw));
+            store_le<typename W::raw_type>(out.data() + off, static_cast<typename W::raw_type>(raw));
         }
     }
 }
