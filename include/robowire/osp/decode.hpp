@@ -68,8 +68,16 @@ inline constexpr fixed_byte markers[] = {
     {0, start1, errc::bad_header}, {1, start2, errc::bad_header}, {8, end1, errc::bad_trailer}, {9, end2, errc::bad_trailer}};
 // Markers and length of any frame: the checks of decode_into<frame>, shared by every message.
 constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
-    for (const auto& m : markers)
-        if (m.offset < in.size() && in[m.offset] != m.value) return {m.code, m.offset};
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // a loop over the four
+        for (const auto& m : markers)
+            if (m.offset < in.size() && in[m.offset] != m.value) return {m.code, m.offset};
+    } else {  // unrolled: faster on hosts
+        const std::size_t n = in.size();
+        if (n > 0 && in[0] != start1) return {errc::bad_header, 0};
+        if (n > 1 && in[1] != start2) return {errc::bad_header, 1};
+        if (n > 8 && in[8] != end1) return {errc::bad_trailer, 8};
+        if (n > 9 && in[9] != end2) return {errc::bad_trailer, 9};
+    }
     if (in.size() < frame_size) return {errc::too_short, in.size()};
     if (in.size() > frame_size) return {errc::too_long, frame_size};
     return {};
