@@ -30,6 +30,12 @@
 #define ROBOWIRE_OPTIMIZE_SIZE 0
 #endif
 #endif
+// Keeps a helper shared by several codecs out of line under ROBOWIRE_OPTIMIZE_SIZE.
+#if ROBOWIRE_OPTIMIZE_SIZE && (defined(__GNUC__) || defined(__clang__))
+#define ROBOWIRE_SIZE_NOINLINE [[gnu::noinline]]
+#else
+#define ROBOWIRE_SIZE_NOINLINE
+#endif
 
 // ROBOWIRE_ARRAY_LOOPS: 1 codes an array field (decode, encode) as one copy of
 // the element's code in a loop, 0 as one copy per element. Default 1 only when

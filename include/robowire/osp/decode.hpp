@@ -104,8 +104,10 @@ ROBOWIRE_ALWAYS_INLINE constexpr error encode_fields(const M& m, std::span<std::
     if (robowire::detail::check_record<M>(m, 0, err, fields)) robowire::detail::store_record<M>(m, out, 0, fields);
     return err;
 }
-// The frame of a message with key DEV << 8 | CMD and no parameters.
-constexpr void write_frame(std::uint8_t* out, std::uint16_t key) noexcept {
+// b becomes the frame of a message with key DEV << 8 | CMD and no parameters.
+ROBOWIRE_SIZE_NOINLINE constexpr void write_frame(bytes<frame_size>& b, std::uint16_t key) noexcept {
+    b.resize(frame_size);
+    std::uint8_t* out = b.data();
     out[0] = start1;
     out[1] = start2;
     out[2] = static_cast<std::uint8_t>(key >> 8);
@@ -146,8 +148,7 @@ template <class Message = message>
 [[nodiscard]] constexpr result<bytes<frame_size>> encode(const std::type_identity_t<Message>& m) noexcept {
     result<bytes<frame_size>> r{std::in_place};
     auto& b = robowire::detail::built_value(r);
-    b.resize(frame_size);
-    impl::write_frame(b.data(), impl::keys_v<Message>[m.index()]);
+    impl::write_frame(b, impl::keys_v<Message>[m.index()]);
     const auto out = std::span<std::uint8_t, frame_size>(b.data(), frame_size);
     robowire::detail::visit_held(m, [&](const auto& x) {
         if (const error e = impl::encode_fields(x, out)) r = e;
@@ -171,8 +172,7 @@ template <class Handler>
     }
     const auto reply = [&r](const auto& answer) {  // encoded straight into r
         auto& out = robowire::detail::built_value(r).emplace();
-        out.resize(frame_size);
-        impl::write_frame(out.data(), impl::key_of<std::remove_cvref_t<decltype(answer)>>());
+        impl::write_frame(out, impl::key_of<std::remove_cvref_t<decltype(answer)>>());
         if (const error e = impl::encode_fields(answer, std::span<std::uint8_t, frame_size>(out.data(), frame_size))) r = e;
     };
     robowire::detail::visit_held(
