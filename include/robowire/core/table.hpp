@@ -62,11 +62,30 @@ inline constexpr std::uint32_t enum_code_mask_v = [] {
     }
     return mask;
 }();
+
+// Codes that form one run lo..hi, without gaps (else found == false).
+template <class E>
+inline constexpr auto enum_code_run_v = [] {
+    struct run { bool found; std::int64_t lo, hi; };
+    run r{!enum_table_v<E>.empty(), 0, 0};
+    bool first = true;
+    for (const auto& entry : enum_table_v<E>) {
+        const auto code = static_cast<std::int64_t>(static_cast<std::underlying_type_t<E>>(entry.value));
+        if (first || code < r.lo) r.lo = code;
+        if (first || code > r.hi) r.hi = code;
+        first = false;
+    }
+    if (r.found && static_cast<std::uint64_t>(r.hi - r.lo) + 1 != enum_table_v<E>.size()) r.found = false;
+    return r;  // (codes are distinct: a table entry per code)
+}();
 }  // namespace detail
 
 template <class E>
 [[nodiscard]] constexpr bool is_valid_enum(E e) noexcept {
-    if constexpr (detail::enum_code_mask_v<E> != 0) {  // one test, no table in flash
+    if constexpr (detail::enum_code_run_v<E>.found) {  // one range compare, no table in flash
+        const auto code = static_cast<std::int64_t>(static_cast<std::underlying_type_t<E>>(e));
+        return code >= detail::enum_code_run_v<E>.lo && code <= detail::enum_code_run_v<E>.hi;
+    } else if constexpr (detail::enum_code_mask_v<E> != 0) {  // one bit test, no table in flash
         const auto code = static_cast<std::uint64_t>(static_cast<std::underlying_type_t<E>>(e));
         return code < 32 && (detail::enum_code_mask_v<E> >> code & 1) != 0;
     } else {
