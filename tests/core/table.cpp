@@ -187,3 +187,44 @@ TEST_CASE("encode_to leaves the buffer alone on an error", "[core][table]") {
     CHECK(encode_to(demo::named{"AB", 7}, std::span(out).first(7)).error() == error{errc::buffer_too_small, 8});
     for (auto b : out) CHECK(b == 0xEE);
 }
+
+namespace enums {
+// Three shapes of code set, each checked its own way: a run (one range
+// compare), codes with gaps below 32 (a bit set), a code of 32 or more (the table).
+enum class run : std::int8_t { a = -1, b = 0, c = 1, d = 2 };
+enum class gaps : std::uint8_t { a = 1, b = 4, c = 31 };
+enum class big : std::uint8_t { a = 0, b = 32, c = 200 };
+constexpr auto enum_table_of(std::type_identity<run>) {
+    return std::array<enum_entry<run>, 4>{{{run::a, "a"}, {run::b, "b"}, {run::c, "c"}, {run::d, "d"}}};
+}
+constexpr auto enum_table_of(std::type_identity<gaps>) {
+    return std::array<enum_entry<gaps>, 3>{{{gaps::a, "a"}, {gaps::b, "b"}, {gaps::c, "c"}}};
+}
+constexpr auto enum_table_of(std::type_identity<big>) {
+    return std::array<enum_entry<big>, 3>{{{big::a, "a"}, {big::b, "b"}, {big::c, "c"}}};
+}
+// Number of codes in [lo, hi] that is_valid_enum accepts.
+template <class E>
+constexpr int accepted(int lo, int hi) {
+    int n = 0;
+    for (int v = lo; v <= hi; ++v) n += is_valid_enum(static_cast<E>(v));
+    return n;
+}
+}  // namespace enums
+
+TEST_CASE("is_valid_enum: runs, codes with gaps, large codes", "[core]") {
+    using namespace enums;
+    STATIC_REQUIRE(accepted<run>(-128, 127) == 4);
+    STATIC_REQUIRE(is_valid_enum(run::a) && is_valid_enum(run::d) && !is_valid_enum(static_cast<run>(3)) &&
+                   !is_valid_enum(static_cast<run>(-2)));
+    STATIC_REQUIRE(accepted<gaps>(0, 255) == 3);
+    STATIC_REQUIRE(is_valid_enum(gaps::c) && !is_valid_enum(static_cast<gaps>(0)) && !is_valid_enum(static_cast<gaps>(5)) &&
+                   !is_valid_enum(static_cast<gaps>(32)) && !is_valid_enum(static_cast<gaps>(255)));
+    STATIC_REQUIRE(accepted<big>(0, 255) == 3);
+    STATIC_REQUIRE(is_valid_enum(big::c) && !is_valid_enum(static_cast<big>(1)) && !is_valid_enum(static_cast<big>(33)));
+    // the same at run time (a volatile bound keeps the loops from folding)
+    volatile int top = 255;
+    CHECK(accepted<run>(-128, top - 128) == 4);
+    CHECK(accepted<gaps>(0, top) == 3);
+    CHECK(accepted<big>(0, top) == 3);
+}
