@@ -43,6 +43,8 @@ extern std::span<const std::uint8_t> adv_bytes, scan_response_bytes, notificatio
 extern int fd;                                                                // a serial port
 std::uint16_t read_soc();
 std::int16_t read_centivolts();
+std::int32_t read_millivolts();
+std::uint16_t read_soc_basis_points();
 void uart_write(const std::uint8_t* data, std::size_t size);
 """
 
