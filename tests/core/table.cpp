@@ -228,3 +228,21 @@ TEST_CASE("is_valid_enum: runs, codes with gaps, large codes", "[core]") {
     CHECK(accepted<gaps>(0, top) == 3);
     CHECK(accepted<big>(0, top) == 3);
 }
+
+TEST_CASE("detail::in_range: bounds clamped to what the wire holds, 32- and 64-bit forms", "[core]") {
+    using robowire::detail::in_range;
+    // i8 wire, valid -100..100
+    STATIC_REQUIRE(in_range<-100, 100, -128, 127>(-100) && in_range<-100, 100, -128, 127>(100));
+    STATIC_REQUIRE(!in_range<-100, 100, -128, 127>(-101) && !in_range<-100, 100, -128, 127>(101));
+    // valid range wider than the wire on one side
+    STATIC_REQUIRE(in_range<-1000, 5, -128, 127>(-128) && !in_range<-1000, 5, -128, 127>(6));
+    // no wire value valid
+    STATIC_REQUIRE(!in_range<200, 300, -128, 127>(127) && !in_range<200, 300, -128, 127>(-128));
+    // u32 wire (64-bit form)
+    STATIC_REQUIRE(in_range<10, 4000000000, 0, 4294967295>(4000000000) &&
+                   !in_range<10, 4000000000, 0, 4294967295>(4000000001) && !in_range<10, 4000000000, 0, 4294967295>(9));
+    volatile std::int64_t v = -101;  // and at run time
+    CHECK(!in_range<-100, 100, -128, 127>(v));
+    v = 0;
+    CHECK(in_range<-100, 100, -128, 127>(v));
+}

@@ -3,12 +3,32 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 
+#include "../config.hpp"
 #include "../table.hpp"
 
 namespace robowire::detail {
+
+// lo <= v <= hi, for a v known to lie in [full_lo, full_hi] (the decoder): in 32
+// bits when that range fits (on a 32-bit core a 64-bit compare is several
+// instructions), bounds clamped to it.
+template <std::int64_t Lo, std::int64_t Hi, std::int64_t FullLo, std::int64_t FullHi>
+ROBOWIRE_ALWAYS_INLINE constexpr bool in_range(std::int64_t v) noexcept {
+    constexpr std::int64_t lo = Lo > FullLo ? Lo : FullLo, hi = Hi < FullHi ? Hi : FullHi;
+    if constexpr (lo > hi) {  // no value the wire can hold is valid
+        (void)v;
+        return false;
+    } else if constexpr (FullLo >= std::numeric_limits<std::int32_t>::min() && FullHi <= std::numeric_limits<std::int32_t>::max()) {
+        // one unsigned compare: v - lo wraps above hi - lo when v < lo
+        const auto d = static_cast<std::uint32_t>(static_cast<std::int32_t>(v)) - static_cast<std::uint32_t>(lo);
+        return d <= static_cast<std::uint32_t>(hi - lo);
+    } else {
+        return static_cast<std::uint64_t>(v) - static_cast<std::uint64_t>(lo) <= static_cast<std::uint64_t>(hi - lo);
+    }
+}
 
 template <class M>
 concept reports_trailing = requires(M m) { m.ignored_trailing_bytes = std::size_t{}; };

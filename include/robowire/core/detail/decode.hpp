@@ -142,7 +142,10 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
                 else return range{std::numeric_limits<typename W::raw_type>::min(), std::numeric_limits<typename W::raw_type>::max()};
             }();
             if constexpr (valid.min > full.min || valid.max < full.max) {
-                if (raw < valid.min || raw > valid.max) { err = {errc::value_out_of_range, off}; return false; }
+                if (!in_range<valid.min, valid.max, full.min, full.max>(raw)) {
+                    err = {errc::value_out_of_range, off};
+                    return false;
+                }
             }
             if constexpr (std::is_same_v<E, bool>) v = raw != 0;
             else v = static_cast<E>(raw);
