@@ -39,3 +39,32 @@ TEST_CASE("decode_variant picks the alternative by its key byte", "[core][dispat
     STATIC_REQUIRE(robowire::encode(demo2::any{demo2::ping{100}}).error() == error{errc::value_out_of_range, 2});
     CHECK(robowire::encode(demo2::any{demo2::ping{5}}).value() == test::hex("A5 01 05"));
 }
+
+#if defined(__cpp_exceptions)
+namespace demo2 {
+// A message whose converting constructor throws: emplacing it leaves a variant
+// valueless (a user-written copy keeps the standard library from avoiding that).
+struct boom {
+    std::uint8_t seq{};
+    boom() = default;
+    boom(const boom& o) : seq(o.seq) {}
+    boom& operator=(const boom& o) { seq = o.seq; return *this; }
+    explicit boom(int) { throw 1; }
+    friend constexpr bool operator==(const boom&, const boom&) = default;
+};
+constexpr auto table_of(std::type_identity<boom>) {
+    using namespace robowire;
+    return make_table<boom>("boom", {{0, 0xA5, errc::bad_header}, {1, 0x03, errc::bad_command}}, field{"seq", &boom::seq, 2, wire::u8{}});
+}
+}  // namespace demo2
+
+TEST_CASE("encode(variant) of a variant left valueless by an exception is an error", "[core][dispatch]") {
+    std::variant<demo2::ping, demo2::boom> v{demo2::ping{1}};
+    try {
+        v.emplace<demo2::boom>(1);
+    } catch (int) {
+    }
+    REQUIRE(v.valueless_by_exception());
+    CHECK(robowire::encode(v).error() == error{errc::unknown_message, 0});
+}
+#endif

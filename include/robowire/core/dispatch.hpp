@@ -129,7 +129,6 @@ template <class Variant, std::size_t KeyOffset = 0>
     return r;
 }
 
-// Encodes whichever message the variant holds, into the largest buffer any needs.
 namespace detail {
 template <class Variant> struct max_size_of;
 template <class... M> struct max_size_of<std::variant<M...>> {
@@ -143,6 +142,9 @@ template <class... M> struct max_size_of<std::variant<M...>> {
 template <class Variant>
 inline constexpr std::size_t variant_max_size_v = detail::max_size_of<Variant>::value;
 
+// Encodes whichever message the variant holds, into the largest buffer any
+// needs. Errors: the message's; unknown_message (offset 0) for a variant left
+// valueless by an exception.
 template <class... M>
 [[nodiscard]] constexpr result<bytes<variant_max_size_v<std::variant<M...>>>> encode(const std::variant<M...>& v) noexcept {
     using out_t = bytes<variant_max_size_v<std::variant<M...>>>;

@@ -143,10 +143,17 @@ template <class Message>
 }
 
 // Encodes any message of the variant: one frame writer for all of them, then
-// the message's own fields.
+// the message's own fields. Errors: the message's field errors;
+// unknown_message for a variant left valueless by an exception.
 template <class Message = message>
 [[nodiscard]] constexpr result<bytes<frame_size>> encode(const std::type_identity_t<Message>& m) noexcept {
     result<bytes<frame_size>> r{std::in_place};
+    if constexpr (!robowire::detail::access_noexcept) {  // valueless only after an exception
+        if (m.valueless_by_exception()) {
+            r = fail(errc::unknown_message, 2);
+            return r;
+        }
+    }
     auto& b = robowire::detail::built_value(r);
     impl::write_frame(b, impl::keys_v<Message>[m.index()]);
     const auto out = std::span<std::uint8_t, frame_size>(b.data(), frame_size);
