@@ -215,13 +215,13 @@ constexpr int accepted(int lo, int hi) {
 TEST_CASE("is_valid_enum: runs, codes with gaps, large codes", "[core]") {
     using namespace enums;
     STATIC_REQUIRE(accepted<run>(-128, 127) == 4);
-    STATIC_REQUIRE(is_valid_enum(run::a) && is_valid_enum(run::d) && !is_valid_enum(static_cast<run>(3)) &&
-                   !is_valid_enum(static_cast<run>(-2)));
+    STATIC_REQUIRE((is_valid_enum(run::a) && is_valid_enum(run::d) && !is_valid_enum(static_cast<run>(3)) &&
+                   !is_valid_enum(static_cast<run>(-2))));
     STATIC_REQUIRE(accepted<gaps>(0, 255) == 3);
-    STATIC_REQUIRE(is_valid_enum(gaps::c) && !is_valid_enum(static_cast<gaps>(0)) && !is_valid_enum(static_cast<gaps>(5)) &&
-                   !is_valid_enum(static_cast<gaps>(32)) && !is_valid_enum(static_cast<gaps>(255)));
+    STATIC_REQUIRE((is_valid_enum(gaps::c) && !is_valid_enum(static_cast<gaps>(0)) && !is_valid_enum(static_cast<gaps>(5)) &&
+                   !is_valid_enum(static_cast<gaps>(32)) && !is_valid_enum(static_cast<gaps>(255))));
     STATIC_REQUIRE(accepted<big>(0, 255) == 3);
-    STATIC_REQUIRE(is_valid_enum(big::c) && !is_valid_enum(static_cast<big>(1)) && !is_valid_enum(static_cast<big>(33)));
+    STATIC_REQUIRE((is_valid_enum(big::c) && !is_valid_enum(static_cast<big>(1)) && !is_valid_enum(static_cast<big>(33))));
     // the same at run time (a volatile bound keeps the loops from folding)
     volatile int top = 255;
     CHECK(accepted<run>(-128, top - 128) == 4);
@@ -232,15 +232,15 @@ TEST_CASE("is_valid_enum: runs, codes with gaps, large codes", "[core]") {
 TEST_CASE("detail::in_range: bounds clamped to what the wire holds, 32- and 64-bit forms", "[core]") {
     using robowire::detail::in_range;
     // i8 wire, valid -100..100
-    STATIC_REQUIRE(in_range<-100, 100, -128, 127>(-100) && in_range<-100, 100, -128, 127>(100));
-    STATIC_REQUIRE(!in_range<-100, 100, -128, 127>(-101) && !in_range<-100, 100, -128, 127>(101));
+    STATIC_REQUIRE((in_range<-100, 100, -128, 127>(-100) && in_range<-100, 100, -128, 127>(100)));
+    STATIC_REQUIRE((!in_range<-100, 100, -128, 127>(-101) && !in_range<-100, 100, -128, 127>(101)));
     // valid range wider than the wire on one side
-    STATIC_REQUIRE(in_range<-1000, 5, -128, 127>(-128) && !in_range<-1000, 5, -128, 127>(6));
+    STATIC_REQUIRE((in_range<-1000, 5, -128, 127>(-128) && !in_range<-1000, 5, -128, 127>(6)));
     // no wire value valid
-    STATIC_REQUIRE(!in_range<200, 300, -128, 127>(127) && !in_range<200, 300, -128, 127>(-128));
+    STATIC_REQUIRE((!in_range<200, 300, -128, 127>(127) && !in_range<200, 300, -128, 127>(-128)));
     // u32 wire (64-bit form)
-    STATIC_REQUIRE(in_range<10, 4000000000, 0, 4294967295>(4000000000) &&
-                   !in_range<10, 4000000000, 0, 4294967295>(4000000001) && !in_range<10, 4000000000, 0, 4294967295>(9));
+    STATIC_REQUIRE((in_range<10, 4000000000, 0, 4294967295>(4000000000) &&
+                   !in_range<10, 4000000000, 0, 4294967295>(4000000001) && !in_range<10, 4000000000, 0, 4294967295>(9)));
     volatile std::int64_t v = -101;  // and at run time
     CHECK(!in_range<-100, 100, -128, 127>(v));
     v = 0;
