@@ -19,10 +19,11 @@
 #define ROBOWIRE_ALWAYS_INLINE inline
 #endif
 
-// ROBOWIRE_OPTIMIZE_SIZE: 1 leaves out code that only makes robowire faster
-// (the OSP scanner's whole-frame path for large chunks: it then takes every
-// chunk byte by byte, with the same results). Default 1 when compiling with
-// -Os / -Oz. Define it to choose.
+// ROBOWIRE_OPTIMIZE_SIZE: 1 takes the smaller of robowire's equivalent code
+// paths, with the same results (OSP scanner byte by byte, records and optional
+// blocks decoded in place, key lists instead of 256-byte dispatch tables, ...;
+// docs/architecture.md lists them). Default 1 when compiling with -Os / -Oz.
+// Define it to choose.
 #ifndef ROBOWIRE_OPTIMIZE_SIZE
 #if defined(__OPTIMIZE_SIZE__)
 #define ROBOWIRE_OPTIMIZE_SIZE 1

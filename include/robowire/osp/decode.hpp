@@ -43,12 +43,18 @@ template <class M>
 constexpr std::uint16_t key_of() noexcept {
     return static_cast<std::uint16_t>(robowire::detail::key_of<M>(2) << 8 | robowire::detail::key_of<M>(3));
 }
-// Every alternative of Message has a DEV/CMD pair of its own.
+// DEV << 8 | CMD of each alternative, in flash (a local array would be copied to the stack).
+template <class Message, class = std::make_index_sequence<std::variant_size_v<Message>>>
+inline constexpr std::uint16_t keys_v[1] = {};
 template <class Message, std::size_t... I>
-constexpr bool keys_distinct(std::index_sequence<I...>) noexcept {
-    constexpr std::uint16_t keys[] = {key_of<std::variant_alternative_t<I, Message>>()...};
-    for (std::size_t a = 0; a < sizeof...(I); ++a)
-        for (std::size_t b = a + 1; b < sizeof...(I); ++b)
+inline constexpr std::uint16_t keys_v<Message, std::index_sequence<I...>>[sizeof...(I)] = {
+    key_of<std::variant_alternative_t<I, Message>>()...};
+// Every alternative of Message has a DEV/CMD pair of its own.
+template <class Message>
+constexpr bool keys_distinct() noexcept {
+    const auto& keys = keys_v<Message>;
+    for (std::size_t a = 0; a < std::size(keys); ++a)
+        for (std::size_t b = a + 1; b < std::size(keys); ++b)
             if (keys[a] == keys[b]) return false;
     return true;
 }
@@ -63,20 +69,17 @@ constexpr bool plain_frame() noexcept {
         if (t.fixed[k].offset != expect[k].offset || t.fixed[k].value != expect[k].value) return false;
     return true;
 }
-// The four markers, in the order they are checked.
-inline constexpr fixed_byte markers[] = {
-    {0, start1, errc::bad_header}, {1, start2, errc::bad_header}, {8, end1, errc::bad_trailer}, {9, end2, errc::bad_trailer}};
+// The four markers: the fixed bytes of osp::frame (a copy of them alone, so
+// that the loop below keeps only 32 bytes of the table in flash).
+inline constexpr auto markers = table_v<osp::frame>.fixed;
 // Markers and length of any frame: the checks of decode_into<frame>, shared by every message.
 constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
     if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // a loop over the four
         for (const auto& m : markers)
             if (m.offset < in.size() && in[m.offset] != m.value) return {m.code, m.offset};
     } else {  // unrolled: faster on hosts
-        const std::size_t n = in.size();
-        if (n > 0 && in[0] != start1) return {errc::bad_header, 0};
-        if (n > 1 && in[1] != start2) return {errc::bad_header, 1};
-        if (n > 8 && in[8] != end1) return {errc::bad_trailer, 8};
-        if (n > 9 && in[9] != end2) return {errc::bad_trailer, 9};
+        constexpr auto all = std::make_index_sequence<markers.size()>{};
+        if (const error e = robowire::detail::check_fixed<osp::frame>(in, all)) return e;
     }
     if (in.size() < frame_size) return {errc::too_short, in.size()};
     if (in.size() > frame_size) return {errc::too_long, frame_size};
@@ -116,12 +119,6 @@ ROBOWIRE_SIZE_NOINLINE constexpr void write_frame(bytes<frame_size>& b, std::uin
     out[8] = end1;
     out[9] = end2;
 }
-// DEV << 8 | CMD of each alternative, in flash (a local array would be copied to the stack).
-template <class Message, class = std::make_index_sequence<std::variant_size_v<Message>>>
-inline constexpr std::uint16_t keys_v[1] = {};
-template <class Message, std::size_t... I>
-inline constexpr std::uint16_t keys_v<Message, std::index_sequence<I...>>[sizeof...(I)] = {
-    key_of<std::variant_alternative_t<I, Message>>()...};
 }  // namespace impl
 
 // Decodes one 10-byte frame into whichever message its DEV and CMD name.
@@ -129,7 +126,7 @@ inline constexpr std::uint16_t keys_v<Message, std::index_sequence<I...>>[sizeof
 // (offset 2), and the message's own field errors.
 template <class Message>
 [[nodiscard]] constexpr decode_result decode(std::span<const std::uint8_t> in) noexcept {
-    static_assert(impl::keys_distinct<Message>(std::make_index_sequence<std::variant_size_v<Message>>{}),
+    static_assert(impl::keys_distinct<Message>(),
                   "osp::decode: two messages share a DEV/CMD pair (the second could never be decoded)");
     decode_result d{std::in_place};
     if (const error e = impl::check_frame(in)) {
