@@ -238,11 +238,22 @@ TEST_CASE("detail::in_range: bounds clamped to what the wire holds, 32- and 64-b
     STATIC_REQUIRE((in_range<-1000, 5, -128, 127>(-128) && !in_range<-1000, 5, -128, 127>(6)));
     // no wire value valid
     STATIC_REQUIRE((!in_range<200, 300, -128, 127>(127) && !in_range<200, 300, -128, 127>(-128)));
-    // u32 wire (64-bit form)
+    // u32 wire (unsigned 32-bit form)
     STATIC_REQUIRE((in_range<10, 4000000000, 0, 4294967295>(4000000000) &&
                    !in_range<10, 4000000000, 0, 4294967295>(4000000001) && !in_range<10, 4000000000, 0, 4294967295>(9)));
+    // u32 wire bounded below only (BuWizz3 0x21 idle timeout >= 10): the top of the wire range is valid
+    STATIC_REQUIRE((in_range<10, 4294967295, 0, 4294967295>(4294967295) && in_range<10, 4294967295, 0, 4294967295>(10) &&
+                   !in_range<10, 4294967295, 0, 4294967295>(9) && !in_range<10, 4294967295, 0, 4294967295>(0)));
+    // a range wider than 32 bits (64-bit form)
+    STATIC_REQUIRE((in_range<-5000000000, 5000000000, -10000000000, 10000000000>(-5000000000) &&
+                   !in_range<-5000000000, 5000000000, -10000000000, 10000000000>(5000000001) &&
+                   !in_range<-5000000000, 5000000000, -10000000000, 10000000000>(-5000000001)));
     volatile std::int64_t v = -101;  // and at run time
     CHECK(!in_range<-100, 100, -128, 127>(v));
     v = 0;
     CHECK(in_range<-100, 100, -128, 127>(v));
+    v = 4294967295;
+    CHECK(in_range<10, 4294967295, 0, 4294967295>(v));
+    v = 9;
+    CHECK(!in_range<10, 4294967295, 0, 4294967295>(v));
 }

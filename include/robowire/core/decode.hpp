@@ -21,21 +21,31 @@ template <class M>
     return in.size();
 }
 
-// Decodes `in` into `out` (an existing object, e.g. one refreshed 20 times a
-// second): the same checks as decode(); returns errc::ok or the error. On an
-// error, `out`'s fields are unspecified.
-template <described M>
-[[nodiscard]] constexpr error decode_into(M& out, std::span<const std::uint8_t> in) noexcept {
+namespace detail {
+// decode_into without the check of the fixed byte at offset Known, which a
+// dispatcher has matched already (no_offset: every fixed byte is checked).
+inline constexpr std::size_t no_offset = static_cast<std::size_t>(-1);
+template <std::size_t Known, class M>
+ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const std::uint8_t> in) noexcept {
     constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input(), extent = table_v<M>.max_size();
-    if (const error e = detail::check_fixed<M>(in, std::make_index_sequence<detail::fixed_count_v<M>>{}); e.code != errc::ok)
+    if (const error e = check_fixed<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{}); e.code != errc::ok)
         return e;
     if (in.size() < min) return fail(errc::too_short, in.size());
     if (in.size() > max) return fail(errc::too_long, max);
     error err{};
     const auto known = in.size() > extent ? in.first(extent) : in;
-    if (!detail::decode_record<M>(out, known, 0, err, std::make_index_sequence<detail::field_count_v<M>>{})) return err;
-    if constexpr (detail::reports_trailing<M>) out.ignored_trailing_bytes = in.size() - known.size();
+    if (!decode_record<M>(out, known, 0, err, std::make_index_sequence<field_count_v<M>>{})) return err;
+    if constexpr (reports_trailing<M>) out.ignored_trailing_bytes = in.size() - known.size();
     return err;
+}
+}  // namespace detail
+
+// Decodes `in` into `out` (an existing object, e.g. one refreshed 20 times a
+// second): the same checks as decode(); returns errc::ok or the error. On an
+// error, `out`'s fields are unspecified.
+template <described M>
+[[nodiscard]] constexpr error decode_into(M& out, std::span<const std::uint8_t> in) noexcept {
+    return detail::decode_checked<detail::no_offset>(out, in);
 }
 
 // Decodes a message of type M from `in`; every length, fixed byte, range and

@@ -99,15 +99,15 @@ constexpr std::size_t index_of_key(std::uint8_t key) noexcept {
 }
 
 // Makes alternative I of r's variant and decodes `in` into it, in place.
-template <std::size_t I, class Variant>
+template <std::size_t I, std::size_t KeyOffset, class Variant>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r, std::span<const std::uint8_t> in) noexcept {
     auto& m = robowire::detail::emplace_alternative<I>(built_value(r));
-    if (const error e = decode_into(m, in); e.code != errc::ok) r = e;
+    if (const error e = decode_checked<KeyOffset>(m, in); e.code != errc::ok) r = e;  // the key matched already
 }
-template <class Variant, std::size_t... I>
+template <std::size_t KeyOffset, class Variant, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_index(result<Variant>& r, std::size_t index, std::span<const std::uint8_t> in,
                                                    std::index_sequence<I...>) noexcept {
-    (void)((index == I ? (decode_alternative<I>(r, in), true) : false) || ...);
+    (void)((index == I ? (decode_alternative<I, KeyOffset>(r, in), true) : false) || ...);
 }
 }  // namespace detail
 
@@ -124,7 +124,7 @@ template <class Variant, std::size_t KeyOffset = 0>
                index == std::variant_size_v<Variant>) {
         r = fail(errc::unknown_message, KeyOffset);
     } else {
-        detail::decode_index(r, index, in, std::make_index_sequence<std::variant_size_v<Variant>>{});
+        detail::decode_index<KeyOffset>(r, index, in, std::make_index_sequence<std::variant_size_v<Variant>>{});
     }
     return r;
 }

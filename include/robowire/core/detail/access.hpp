@@ -25,6 +25,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool in_range(std::int64_t v) noexcept {
         // one unsigned compare: v - lo wraps above hi - lo when v < lo
         const auto d = static_cast<std::uint32_t>(static_cast<std::int32_t>(v)) - static_cast<std::uint32_t>(lo);
         return d <= static_cast<std::uint32_t>(hi - lo);
+    } else if constexpr (FullLo >= 0 && FullHi <= std::numeric_limits<std::uint32_t>::max()) {  // a u32 wire value
+        return static_cast<std::uint32_t>(v) - static_cast<std::uint32_t>(lo) <= static_cast<std::uint32_t>(hi - lo);
     } else {
         return static_cast<std::uint64_t>(v) - static_cast<std::uint64_t>(lo) <= static_cast<std::uint64_t>(hi - lo);
     }

@@ -155,10 +155,11 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
 }
 
 // The first fixed byte of M that `in` has and gets wrong, as an error (code ok if none).
-template <class M, std::size_t... K>
+// Skip: the offset of a fixed byte not to check (matched by a dispatcher already).
+template <class M, std::size_t Skip = static_cast<std::size_t>(-1), std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr error check_fixed(std::span<const std::uint8_t> in, std::index_sequence<K...>) noexcept {
     error e{};
-    (void)((((table_v<M>.fixed[K].offset < in.size()) &&
+    (void)((((table_v<M>.fixed[K].offset != Skip) && (table_v<M>.fixed[K].offset < in.size()) &&
              in[table_v<M>.fixed[K].offset] != table_v<M>.fixed[K].value)
                 ? (e = {table_v<M>.fixed[K].code, table_v<M>.fixed[K].offset}, true)
                 : false) ||
