@@ -52,7 +52,7 @@ void buwizz3_demo() {
     }
     // Out of range is an error, not a silently truncated value.
     const auto bad = robowire::encode(bw::set_data_period{10});
-    std::printf("  set_data_period 10 ms: %s at byte %zu\n", robowire::to_string(bad.code()).data(), bad.error().offset);
+    std::printf("  set_data_period 10 ms: %s at byte %u\n", robowire::to_string(bad.code()).data(), static_cast<unsigned>(bad.error().offset));
     expect(bad.code() == robowire::errc::value_out_of_range, "buwizz3 range");
 }
 
@@ -71,8 +71,8 @@ void navbot_demo() {
     const auto doc = navbot::encode(m, navbot::sign_encoding::sign_magnitude).value();
     print_hex("same, document's sign-magnitude", doc);
     const auto refused = navbot::decode_maneuver(doc);
-    std::printf("  read the robot's way: %s at byte %zu (0x8A = -118)\n", robowire::to_string(refused.code()).data(),
-                refused.error().offset);
+    std::printf("  read the robot's way: %s at byte %u (0x8A = -118)\n", robowire::to_string(refused.code()).data(),
+                static_cast<unsigned>(refused.error().offset));
     expect(refused.code() == robowire::errc::value_out_of_range, "sign-magnitude refused");
     // A JSON request split into frames and put back together.
     const auto frames = navbot::json_frames(R"({"type":"get_device_info"})").value();
@@ -109,7 +109,7 @@ void osp_demo() {
     // A frame with a bad trailer is rejected with the offset of the bad byte.
     std::array<std::uint8_t, 10> bad{0xFF, 0xAA, 0x02, 0x12, 0x72, 0x06, 0x00, 0x00, 0x55, 0x00};
     const auto err = osp::decode(bad);
-    std::printf("  bad frame: %s at byte %zu\n", robowire::to_string(err.code()).data(), err.error().offset);
+    std::printf("  bad frame: %s at byte %u\n", robowire::to_string(err.code()).data(), static_cast<unsigned>(err.error().offset));
     expect(err.error() == robowire::error{robowire::errc::bad_trailer, 9}, "osp bad trailer");
 }
 }  // namespace

@@ -75,7 +75,7 @@ constexpr result<std::optional<advertisement>> parse_advertisement(
     error err2{};
     impl::read_structures(scan_response, out, err2);
     if (err.code != errc::ok) return err;
-    if (err2.code != errc::ok) return error{err2.code, adv.size() + err2.offset};
+    if (err2.code != errc::ok) return fail(err2.code, adv.size() + err2.offset);
     if (!out.has_manufacturer_data && !out.has_service_uuid) return std::optional<advertisement>{};
     return std::optional<advertisement>{out};
 }

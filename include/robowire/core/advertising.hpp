@@ -41,7 +41,7 @@ public:
         if (len == 0) { done_ = true; return std::nullopt; }
         if (len > adv_.size() - pos_ - 1) {
             done_ = true;
-            error_ = {errc::bad_length, pos_};
+            error_ = fail(errc::bad_length, pos_);
             return std::nullopt;
         }
         structure s{adv_[pos_ + 1], adv_.subspan(pos_ + 2, len - 1), pos_};

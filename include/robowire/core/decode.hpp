@@ -30,7 +30,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const st
     constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input(), extent = table_v<M>.max_size();
     if (const error e = check_fixed<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{}); e.code != errc::ok)
         return e;
-    if (in.size() < min) return fail(errc::too_short, in.size());
+    if (in.size() < min) return fail_at(errc::too_short, in.size());
     if (in.size() > max) return fail(errc::too_long, max);
     error err{};
     const auto known = in.size() > extent ? in.first(extent) : in;

@@ -24,7 +24,7 @@ template <described M>
     if (!size) return size.error();
     error err{};
     if (!detail::check_record<M>(m, 0, err, fields)) return err;
-    if (*size > out.size()) return fail(errc::buffer_too_small, *size);
+    if (*size > out.size()) return detail::fail_at(errc::buffer_too_small, *size);
     const auto dst = out.first(*size);
     detail::clear_bytes<M>(dst);
     detail::write_fixed<M>(dst, std::make_index_sequence<detail::fixed_count_v<M>>{});

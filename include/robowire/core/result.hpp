@@ -67,11 +67,13 @@ constexpr std::string_view to_string(errc e) noexcept {
     return "unknown error";
 }
 
-// An error code and the byte offset it refers to. Converts to true when it
-// is an error (like std::error_code): `if (auto e = decode_into(m, bytes)) ...`.
+// An error code and the byte offset it refers to (0..65535: offsets past that
+// read 65535). Four bytes, so that functions return it in a register.
+// Converts to true when it is an error (like std::error_code):
+// `if (auto e = decode_into(m, bytes)) ...`.
 struct error {
     errc code = errc::ok;
-    std::size_t offset = 0;
+    std::uint16_t offset = 0;
     constexpr explicit operator bool() const noexcept { return code != errc::ok; }
     friend constexpr bool operator==(const error&, const error&) = default;
 };
@@ -109,7 +111,7 @@ public:
             put("robowire: value() of a result that holds an error: ");
             put(to_string(e.code));
             put(" at byte ");
-            char digits[20] = {};
+            char digits[5] = {};
             std::size_t d = 0;
             std::size_t v = e.offset;
             do { digits[d++] = static_cast<char>('0' + v % 10); v /= 10; } while (v != 0 && d < sizeof digits);
@@ -123,7 +125,7 @@ public:
 
 private:
     robowire::error error_;
-    char what_[144] = {};  // longest text: 51 + 48 + 9 + 20 digits
+    char what_[120] = {};  // longest text: 51 + 48 + 9 + 5 digits
 };
 #endif
 
@@ -284,7 +286,14 @@ private:
 template <class T>
 constexpr T& detail::built_value(result<T>& r) noexcept { return r.value_.v; }
 
-// Shorthand for returning an error.
-constexpr error fail(errc code, std::size_t offset) noexcept { return error{code, offset}; }
+// Shorthand for returning an error (offsets past 65535 become 65535).
+constexpr error fail(errc code, std::size_t offset) noexcept {
+    return error{code, static_cast<std::uint16_t>(offset < 0xFFFF ? offset : 0xFFFF)};
+}
+namespace detail {
+// An error at an offset inside a message, which its table keeps below 65536
+// (detail/check.hpp): no clamp.
+constexpr error fail_at(errc code, std::size_t offset) noexcept { return error{code, static_cast<std::uint16_t>(offset)}; }
+}  // namespace detail
 
 }  // namespace robowire

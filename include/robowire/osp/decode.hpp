@@ -76,13 +76,13 @@ inline constexpr auto markers = table_v<osp::frame>.fixed;
 constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
     if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // a loop over the four
         for (const auto& m : markers)
-            if (m.offset < in.size() && in[m.offset] != m.value) return {m.code, m.offset};
+            if (m.offset < in.size() && in[m.offset] != m.value) return robowire::detail::fail_at(m.code, m.offset);
     } else {  // unrolled: faster on hosts
         constexpr auto all = std::make_index_sequence<markers.size()>{};
         if (const error e = robowire::detail::check_fixed<osp::frame>(in, all)) return e;
     }
-    if (in.size() < frame_size) return {errc::too_short, in.size()};
-    if (in.size() > frame_size) return {errc::too_long, frame_size};
+    if (in.size() < frame_size) return robowire::detail::fail_at(errc::too_short, in.size());
+    if (in.size() > frame_size) return fail(errc::too_long, frame_size);
     return {};
 }
 // Fixed bytes checked by the frame already: makes the message and decodes its fields in place.

@@ -21,6 +21,7 @@ inline void table_fields_out_of_offset_order(std::string_view /*message*/, std::
 inline void table_fields_overlap(std::string_view /*message*/, std::string_view /*field*/) noexcept {}
 inline void table_field_beyond_message_size(std::string_view /*message*/, std::string_view /*field*/) noexcept {}
 inline void table_fixed_byte_beyond_message_size(std::string_view /*message*/, std::size_t /*offset*/) noexcept {}
+inline void table_message_longer_than_65535_bytes(std::string_view /*message*/) noexcept {}
 inline void table_fixed_byte_under_field(std::string_view /*message*/, std::string_view /*field*/) noexcept {}
 inline void table_leaves_struct_members_without_field(std::string_view /*message*/, std::size_t /*members*/,
                                                       std::size_t /*fields_plus_members_not_on_wire*/) noexcept {}
@@ -83,6 +84,10 @@ constexpr const Table& checked_table(const Table& t, std::bool_constant<MembersM
     });
     for (const auto& b : t.fixed)
         if (limit != 0 && b.offset >= limit) table_fixed_byte_beyond_message_size(t.name, b.offset);
+    // error offsets are 16 bits
+    if (end > 0xFFFF || limit > 0xFFFF) table_message_longer_than_65535_bytes(t.name);
+    for (const auto& b : t.fixed)
+        if (b.offset > 0xFFFF) table_message_longer_than_65535_bytes(t.name);
     if constexpr (!MembersMatch)
         table_leaves_struct_members_without_field(t.name, aggregate_member_count<typename Table::message_type>(),
                                                   Table::field_count + t.members_not_on_wire);

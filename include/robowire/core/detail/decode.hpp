@@ -71,7 +71,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::ui
     auto& member = m.*member_ptr;
     if constexpr (F::is_optional) {
         if (in.size() <= off) { member.reset(); return true; }  // absent
-        if (in.size() < off + F::size) { err = {errc::bad_length, off}; return false; }
+        if (in.size() < off + F::size) { err = fail_at(errc::bad_length, off); return false; }
         if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // decoded in place (on an error the message is unspecified)
             return decode_value<M, I>(member.emplace(), in, off, err);
         } else {
@@ -114,7 +114,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
         std::size_t len = 0;
         while (len < n && in[off + len] != 0) ++len;
         for (std::size_t i = len; i < n; ++i)
-            if (in[off + i] != 0) { err = {errc::bad_padding, off + i}; return false; }
+            if (in[off + i] != 0) { err = fail_at(errc::bad_padding, off + i); return false; }
         std::array<char, n> chars{};
         for (std::size_t i = 0; i < len; ++i) chars[i] = static_cast<char>(in[off + i]);
         v.assign(std::string_view(chars.data(), len));
@@ -133,7 +133,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
         else raw = load_le<typename W::raw_type>(in.data() + off);
         if constexpr (std::is_enum_v<E>) {
             const auto e = static_cast<E>(raw);
-            if (!is_valid_enum(e)) { err = {errc::invalid_enum, off}; return false; }
+            if (!is_valid_enum(e)) { err = fail_at(errc::invalid_enum, off); return false; }
             v = e;
         } else {
             constexpr range valid = f.valid;
@@ -143,7 +143,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
             }();
             if constexpr (valid.min > full.min || valid.max < full.max) {
                 if (!in_range<valid.min, valid.max, full.min, full.max>(raw)) {
-                    err = {errc::value_out_of_range, off};
+                    err = fail_at(errc::value_out_of_range, off);
                     return false;
                 }
             }

@@ -75,12 +75,12 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off,
     } else if constexpr (W::kind == wire_kind::text) {
         const auto s = v.view();
         for (std::size_t i = 0; i < s.size(); ++i)
-            if (s[i] == '\0') { err = {errc::value_out_of_range, off + i}; return false; }
+            if (s[i] == '\0') { err = fail_at(errc::value_out_of_range, off + i); return false; }
         return true;
     } else if constexpr (W::kind == wire_kind::tail || W::kind == wire_kind::f32le) {
         return true;
     } else if constexpr (std::is_enum_v<E>) {
-        if (!is_valid_enum(v)) { err = {errc::invalid_enum, off}; return false; }
+        if (!is_valid_enum(v)) { err = fail_at(errc::invalid_enum, off); return false; }
         return true;
     } else {
         constexpr range valid = field_v<M, I>.valid;
@@ -88,7 +88,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off,
                       valid.min > std::int64_t{std::numeric_limits<E>::min()} ||
                       valid.max < std::int64_t{std::numeric_limits<E>::max()}) {
             const auto raw = static_cast<std::int64_t>(v);
-            if (raw < valid.min || raw > valid.max) { err = {errc::value_out_of_range, off}; return false; }
+            if (raw < valid.min || raw > valid.max) { err = fail_at(errc::value_out_of_range, off); return false; }
         }
         return true;
     }
