@@ -70,42 +70,72 @@ HW_CODEC hw::error decode_maneuver(const std::uint8_t* p, std::size_t n, bool si
     return check(m);
 }
 
-enum outcome : std::uint8_t { need_more, complete, discarded };
+enum outcome : std::uint8_t { need_more, complete, single, duplicate, restarted, discarded };
+// The same rules as robowire's reassembler: repeats of the last frame are
+// ignored, a one-frame message of another command passes through, a sender
+// starting over restarts the message, and after an error the rest of the
+// broken message is discarded.
 struct reassembler {
     std::uint8_t buf[120];
-    std::uint8_t size, last, command;
-    std::uint8_t state;  // 0 idle, 1 collecting, 2 complete, 3 discarding
-    hw::error drop(const frame& f, hw::err e, std::size_t at) {
-        size = 0;
-        state = f.remaining == 0 ? 0 : 3;
-        return hw::fail(e, at);
-    }
+    std::uint8_t size, last_remaining, command;
+    std::uint8_t state;  // 0 idle, 1 collecting, 2 complete
+    bool has_last, skipping;
+    std::uint8_t skip_command;
+    frame last;
+    void remember(const frame& f) { has_last = true; last = f; }
+    void skip(std::uint8_t c) { skipping = true; skip_command = c; }
     hw::error append(const frame& f, outcome& o) {
-        if (sizeof buf - size < 15) return drop(f, hw::capacity_exceeded, 5);
         std::memcpy(buf + size, f.payload, 15);
         size = static_cast<std::uint8_t>(size + 15);
-        last = f.remaining;
+        if (f.remaining != 0 || size > 15) remember(f);
+        last_remaining = f.remaining;
         state = f.remaining == 0 ? 2 : 1;
         o = f.remaining == 0 ? complete : need_more;
         return hw::good;
     }
+    hw::error start(const frame& f, outcome& o) {
+        state = 0;
+        size = 0;
+        command = f.command;
+        if (f.remaining + 1u > sizeof buf / 15) {
+            has_last = false;
+            if (f.remaining != 0) { remember(f); skip(f.command); }
+            return hw::fail(hw::capacity_exceeded, 3);
+        }
+        return append(f, o);
+    }
     HW_CODEC hw::error push(const std::uint8_t* p, std::size_t n, outcome& o) {
         frame f;
         if (auto e = decode_frame(p, n, f); e.code) return e;
-        switch (state) {
-        case 3:
-            if (f.remaining == 0) state = 0;
+        if (has_last && std::memcmp(&f, &last, sizeof f) == 0) { o = duplicate; return hw::good; }
+        if (state == 2) { state = 0; size = 0; }
+        if (skipping && f.command == skip_command) {
+            if (f.remaining == 0) skipping = false;
+            remember(f);
             o = discarded;
             return hw::good;
-        case 1:
-            if (f.command != command) return drop(f, hw::command_changed, 2);
-            if (f.remaining + 1 != last) return drop(f, hw::bad_sequence, 3);
-            return append(f, o);
-        default:
-            command = f.command;
-            size = 0;
-            return append(f, o);
         }
+        if (state == 0) return start(f, o);
+        if (f.command != command) {
+            if (f.remaining == 0) { o = single; return hw::good; }
+            const std::uint8_t broken = command;
+            if (auto e = start(f, o); e.code) return e;
+            skip(broken);
+            return hw::fail(hw::command_changed, 2);
+        }
+        if (f.remaining >= last_remaining) {
+            if (auto e = start(f, o); e.code) return e;
+            o = restarted;
+            return hw::good;
+        }
+        if (f.remaining + 1 != last_remaining) {  // frames lost
+            state = 0;
+            size = 0;
+            remember(f);
+            if (f.remaining != 0) skip(f.command);
+            return hw::fail(hw::bad_sequence, 3);
+        }
+        return append(f, o);
     }
 };
 }  // namespace
