@@ -25,18 +25,24 @@ namespace detail {
 // decode_into without the check of the fixed byte at offset Known, which a
 // dispatcher has matched already (no_offset: every fixed byte is checked).
 inline constexpr std::size_t no_offset = static_cast<std::size_t>(-1);
-template <std::size_t Known, class M>
-ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const std::uint8_t> in) noexcept {
-    constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input(), extent = table_v<M>.max_size();
-    if (const error e = check_fixed<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{}); e.code != errc::ok)
-        return e;
-    if (in.size() < min) return fail_at(errc::too_short, in.size());
-    if (in.size() > max) return fail(errc::too_long, max);
+// The fields of M, from an input whose fixed bytes and length are checked.
+template <class M>
+ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, std::span<const std::uint8_t> in) noexcept {
+    constexpr std::size_t extent = table_v<M>.max_size();
     error err{};
     const auto known = in.size() > extent ? in.first(extent) : in;
     if (!decode_record<M>(out, known, 0, err, std::make_index_sequence<field_count_v<M>>{})) return err;
     if constexpr (reports_trailing<M>) out.ignored_trailing_bytes = in.size() - known.size();
     return err;
+}
+template <std::size_t Known, class M>
+ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const std::uint8_t> in) noexcept {
+    constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input();
+    if (const error e = check_fixed<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{}); e.code != errc::ok)
+        return e;
+    if (in.size() < min) return fail_at(errc::too_short, in.size());
+    if (in.size() > max) return fail_at(errc::too_long, max);
+    return decode_body(out, in);
 }
 }  // namespace detail
 

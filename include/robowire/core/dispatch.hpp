@@ -99,15 +99,49 @@ constexpr std::size_t index_of_key(std::uint8_t key) noexcept {
 }
 
 // Makes alternative I of r's variant and decodes `in` into it, in place.
-template <std::size_t I, std::size_t KeyOffset, class Variant>
+// Checked: fixed bytes and length checked already (see check_alternative).
+template <std::size_t I, std::size_t KeyOffset, bool Checked, class Variant>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r, std::span<const std::uint8_t> in) noexcept {
     auto& m = robowire::detail::emplace_alternative<I>(built_value(r));
-    if (const error e = decode_checked<KeyOffset>(m, in); e.code != errc::ok) r = e;  // the key matched already
+    error e{};
+    if constexpr (Checked) e = decode_body(m, in);
+    else e = decode_checked<KeyOffset>(m, in);  // the key matched already
+    if (e.code != errc::ok) r = e;
 }
-template <std::size_t KeyOffset, class Variant, std::size_t... I>
+template <std::size_t KeyOffset, bool Checked, class Variant, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_index(result<Variant>& r, std::size_t index, std::span<const std::uint8_t> in,
                                                    std::index_sequence<I...>) noexcept {
-    (void)((index == I ? (decode_alternative<I, KeyOffset>(r, in), true) : false) || ...);
+    (void)((index == I ? (decode_alternative<I, KeyOffset, Checked>(r, in), true) : false) || ...);
+}
+
+// Input sizes (min, max) of each alternative, in flash: one length check for
+// all of them under ROBOWIRE_OPTIMIZE_SIZE, instead of one per alternative.
+// Bytes when every size fits (tables keep sizes below 65536).
+template <class Variant>
+struct size_limits;
+template <class... M>
+struct size_limits<std::variant<M...>> {
+    using type = std::conditional_t<((table_v<M>.max_input() < 256) && ...), std::uint8_t, std::uint16_t>;
+    static constexpr type value[sizeof...(M)][2] = {
+        {static_cast<type>(table_v<M>.min_size()), static_cast<type>(table_v<M>.max_input())}...};
+};
+// The fixed bytes (but the key) and the length of alternative `index`, in
+// decode_into's order: code only for alternatives with other fixed bytes.
+template <class Variant, std::size_t KeyOffset, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr error check_alternative(std::size_t index, std::span<const std::uint8_t> in,
+                                                         std::index_sequence<I...>) noexcept {
+    error e{};
+    (void)(((fixed_count_v<std::variant_alternative_t<I, Variant>> > 1 && index == I)
+                ? (e = check_fixed<std::variant_alternative_t<I, Variant>, KeyOffset>(
+                       in, std::make_index_sequence<fixed_count_v<std::variant_alternative_t<I, Variant>>>{}),
+                   true)
+                : false) ||
+           ...);
+    if (e.code != errc::ok) return e;
+    const auto& size = size_limits<Variant>::value[index];
+    if (in.size() < size[0]) return fail_at(errc::too_short, in.size());
+    if (in.size() > size[1]) return fail_at(errc::too_long, size[1]);
+    return e;
 }
 }  // namespace detail
 
@@ -123,8 +157,12 @@ template <class Variant, std::size_t KeyOffset = 0>
     } else if (const std::size_t index = detail::index_of_key<Variant, KeyOffset>(in[KeyOffset]);
                index == std::variant_size_v<Variant>) {
         r = fail(errc::unknown_message, KeyOffset);
+    } else if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
+        constexpr auto all = std::make_index_sequence<std::variant_size_v<Variant>>{};
+        if (const error e = detail::check_alternative<Variant, KeyOffset>(index, in, all); e.code != errc::ok) r = e;
+        else detail::decode_index<KeyOffset, true>(r, index, in, all);
     } else {
-        detail::decode_index<KeyOffset>(r, index, in, std::make_index_sequence<std::variant_size_v<Variant>>{});
+        detail::decode_index<KeyOffset, false>(r, index, in, std::make_index_sequence<std::variant_size_v<Variant>>{});
     }
     return r;
 }

@@ -28,7 +28,7 @@ template <described M>
     const auto dst = out.first(*size);
     detail::clear_bytes<M>(dst);
     detail::write_fixed<M>(dst, std::make_index_sequence<detail::fixed_count_v<M>>{});
-    if constexpr (sizeof(M) > 16) {
+    if constexpr (sizeof(M) > 16 && !ROBOWIRE_OPTIMIZE_SIZE) {
         const M copy = m;  // a local cannot alias `out`: its loads need not wait behind byte stores, so wide fields merge
         detail::store_record<M>(copy, dst, 0, fields);
     } else {

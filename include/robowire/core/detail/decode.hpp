@@ -115,6 +115,10 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
         while (len < n && in[off + len] != 0) ++len;
         for (std::size_t i = len; i < n; ++i)
             if (in[off + i] != 0) { err = fail_at(errc::bad_padding, off + i); return false; }
+        if (!std::is_constant_evaluated()) {  // straight from the input (char may view any bytes)
+            v.assign(std::string_view(reinterpret_cast<const char*>(in.data() + off), len));
+            return true;
+        }
         std::array<char, n> chars{};
         for (std::size_t i = 0; i < len; ++i) chars[i] = static_cast<char>(in[off + i]);
         v.assign(std::string_view(chars.data(), len));
