@@ -19,7 +19,7 @@
 namespace robowire {
 
 // What went wrong. `error::offset` says where (byte index into the input).
-enum class errc : std::uint8_t {
+enum class errc : std::uint16_t {
     ok = 0,
     too_short,           // input ends before the message does
     too_long,            // more bytes than the message can have
@@ -71,7 +71,7 @@ constexpr std::string_view to_string(errc e) noexcept {
 // read 65535). Four bytes, so that functions return it in a register.
 // Converts to true when it is an error (like std::error_code):
 // `if (auto e = decode_into(m, bytes)) ...`.
-struct error {
+struct alignas(4) error {  // no padding, aligned: built in a register, not through memory
     errc code = errc::ok;
     std::uint16_t offset = 0;
     constexpr explicit operator bool() const noexcept { return code != errc::ok; }
@@ -279,6 +279,12 @@ private:
     union {
         holder value_;
         robowire::error error_;
+#if UINTPTR_MAX > 0xFFFFFFFFu
+        // On 64-bit hosts a result of 16 bytes or less lives in registers, where
+        // GCC merges each new one into the last one's register (a dependency from
+        // one decode to the next): at least 17 bytes keep it in memory.
+        unsigned char host_size_[16];
+#endif
     };
     bool ok_;
 };
