@@ -1,4 +1,5 @@
-// BuWizz3: the status report decode alone (what an app reading telemetry links).
+// BuWizz3: the status report decode alone (what an app reading telemetry links),
+// with every field of the result read, so that none of the decode is left out.
 #include <robowire/buwizz3/status.hpp>
 
 #include "harness.hpp"
@@ -7,7 +8,7 @@ namespace bw = robowire::buwizz3;
 
 ENTRY void buwizz3_decode_status(std::span<const std::uint8_t> b) {
     const auto s = robowire::decode<bw::status>(b);
-    if (s) sink = static_cast<std::uint32_t>(s->pu_motors[0].position + s->accel_raw[2] + s->battery_voltage_raw);
+    if (s) out(std::span(reinterpret_cast<const std::uint8_t*>(&*s), sizeof(bw::status)));  // every field
     else sink = static_cast<std::uint32_t>(s.code());
 }
 

@@ -48,7 +48,7 @@ HW_CODEC hw::error decode_status(const std::uint8_t* p, std::size_t n, status& s
 ENTRY void hw_buwizz3_decode_status(const std::uint8_t* p, std::size_t n) {
     status s;
     const auto e = decode_status(p, n, s);
-    if (e.code == 0) sink = static_cast<std::uint32_t>(s.motors[0].position + s.accel[2] + s.battery);
+    if (e.code == 0) hw::out(reinterpret_cast<const std::uint8_t*>(&s), sizeof s);  // every field
     else hw::report(e);
 }
 

@@ -1,4 +1,5 @@
 #include <robowire/core/fields.hpp>
+#include <robowire/buwizz3/commands.hpp>
 #include <robowire/navbot/maneuver.hpp>
 
 #include <array>
@@ -67,6 +68,11 @@ TEST_CASE("describe_error writes the field, its range and the offset", "[core][f
           "maneuver.pitch: value out of range (valid -100..100 %) at byte 7");
     CHECK(describe(error{errc::invalid_enum, 9}, buf) == "maneuver.switch_a: value is not a valid code at byte 9");
     CHECK(describe(error{errc::bad_header, 1}, buf) == "maneuver: bad header byte at byte 1");
+    // a unit that scales the raw values (BuWizz3 power: raw 127 is 100 %): the range says "raw"
+    CHECK(describe_error<robowire::buwizz3::set_motor_data>(error{errc::value_out_of_range, 3}, buf) ==
+          "set_motor_data.power: value out of range (valid -127..127 raw) at byte 3");
+    STATIC_REQUIRE(!field_of<&robowire::buwizz3::set_motor_data::power>().raw_is_physical);
+    STATIC_REQUIRE(field_of<&nb::maneuver::pitch>().raw_is_physical);
     std::array<char, 10> small{};
     CHECK(describe_error<nb::maneuver>(error{errc::value_out_of_range, 7}, small) == "maneuver.p");  // cut to fit
 }

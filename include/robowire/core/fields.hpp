@@ -25,13 +25,14 @@ struct field_info {
     range valid{0, 0};           // valid raw values, inclusive (scalars; enums: see is_enum)
     bool is_enum = false;        // valid values are the enumeration's codes, not a range
     std::string_view unit{};     // physical unit of the field ("" if none)
+    bool raw_is_physical = true; // raw values (valid) are in `unit` (scale 1, offset 0)
     constexpr explicit operator bool() const noexcept { return !name.empty(); }
 };
 
 namespace detail {
 template <class M, class F>
 constexpr field_info info_of(const F& f) noexcept {
-    return {table_v<M>.name, f.name, f.offset, f.size, f.valid, F::is_enum, f.unit.name};
+    return {table_v<M>.name, f.name, f.offset, f.size, f.valid, F::is_enum, f.unit.name, f.unit.raw_is_physical};
 }
 }  // namespace detail
 
@@ -121,9 +122,10 @@ template <auto Member, class M, class V>
     return out;
 }
 
-// Writes "message.field: <error> (valid min..max) at byte N" (or without
-// the field part when no field is at the offset) into `buf`, cut to fit;
-// returns the text written. For logs; no heap.
+// Writes "message.field: <error> (valid min..max unit) at byte N" (or
+// without the field part when no field is at the offset) into `buf`, cut to
+// fit; returns the text written. The range is in raw values: "raw" instead of
+// the unit when the unit scales them. For logs; no heap.
 template <described M>
 constexpr std::string_view describe_error(const error& e, std::span<char> buf) noexcept {
     std::size_t n = 0;
@@ -152,9 +154,11 @@ constexpr std::string_view describe_error(const error& e, std::span<char> buf) n
         put_int(f.valid.min);
         put("..");
         put_int(f.valid.max);
-        if (!f.unit.empty()) {
+        if (!f.unit.empty() && f.raw_is_physical) {
             put(" ");
             put(f.unit);
+        } else if (!f.unit.empty()) {
+            put(" raw");  // e.g. BuWizz3 power: -127..127 raw is -100..100 %
         }
         put(")");
     }
