@@ -92,33 +92,36 @@ template <auto Member, class M, class V>
     using traits = detail::member_pointer_traits<decltype(Member)>;
     using T = typename traits::member;
     static_assert(std::is_same_v<typename traits::message, M>, "set_field: the member belongs to another message");
-    static_assert(std::is_integral_v<T> || std::is_enum_v<T>, "set_field: scalar or enum members only");
+    static_assert(std::is_integral_v<T> || std::is_enum_v<T>,
+                  "set_field: scalar or enum members only (an array element: check field_of<&M::member>().valid and assign it)");
     error out{errc::unknown_message, 0};  // member not in the table (cannot happen for a described member)
-    bool found = false;
-    for_each_field<M>([&](const auto& f) {
-        if constexpr (std::is_same_v<decltype(f.member), decltype(Member)>) {
-            if (found || f.member != Member) return;
-            found = true;
-            if constexpr (std::is_enum_v<T>) {
-                using U = std::underlying_type_t<T>;
-                if (std::cmp_less(value, std::numeric_limits<U>::min()) ||
-                    std::cmp_greater(value, std::numeric_limits<U>::max()) ||
-                    !is_valid_enum(static_cast<T>(static_cast<U>(value)))) {
-                    out = fail(errc::invalid_enum, f.offset);
-                    return;
+    if constexpr (std::is_integral_v<T> || std::is_enum_v<T>) {  // else only the assertion above is reported
+        bool found = false;
+        for_each_field<M>([&](const auto& f) {
+            if constexpr (std::is_same_v<decltype(f.member), decltype(Member)>) {
+                if (found || f.member != Member) return;
+                found = true;
+                if constexpr (std::is_enum_v<T>) {
+                    using U = std::underlying_type_t<T>;
+                    if (std::cmp_less(value, std::numeric_limits<U>::min()) ||
+                        std::cmp_greater(value, std::numeric_limits<U>::max()) ||
+                        !is_valid_enum(static_cast<T>(static_cast<U>(value)))) {
+                        out = fail(errc::invalid_enum, f.offset);
+                        return;
+                    }
+                    m.*Member = static_cast<T>(static_cast<U>(value));
+                } else {
+                    if (std::cmp_less(value, f.valid.min) || std::cmp_greater(value, f.valid.max) ||
+                        !std::in_range<T>(value)) {
+                        out = fail(errc::value_out_of_range, f.offset);
+                        return;
+                    }
+                    m.*Member = static_cast<T>(value);
                 }
-                m.*Member = static_cast<T>(static_cast<U>(value));
-            } else {
-                if (std::cmp_less(value, f.valid.min) || std::cmp_greater(value, f.valid.max) ||
-                    !std::in_range<T>(value)) {
-                    out = fail(errc::value_out_of_range, f.offset);
-                    return;
-                }
-                m.*Member = static_cast<T>(value);
+                out = error{};
             }
-            out = error{};
-        }
-    });
+        });
+    }
     return out;
 }
 
