@@ -44,6 +44,15 @@ constexpr bool same_bytes(const std::uint8_t* a, const std::uint8_t* b, std::siz
 }
 }  // namespace detail
 
+template <std::size_t N>
+class bytes;
+namespace detail {
+// Sets the size of an empty bytes whose first n bytes (n <= N) the caller has
+// written through data(): no clamp, no zero fill (the codecs' encoders).
+template <std::size_t N>
+constexpr void set_written_size(bytes<N>& b, std::size_t n) noexcept;
+}  // namespace detail
+
 // Up to N bytes, stored inline. Unused capacity is always zero, so the default
 // comparison compares exactly the used bytes.
 template <std::size_t N>
@@ -113,7 +122,12 @@ public:
 private:
     std::array<std::uint8_t, N> data_{};
     std::size_t size_ = 0;
+    template <std::size_t M>
+    friend constexpr void detail::set_written_size(bytes<M>& b, std::size_t n) noexcept;
 };
+
+template <std::size_t N>
+constexpr void detail::set_written_size(bytes<N>& b, std::size_t n) noexcept { b.size_ = n; }
 
 // Equal when sizes and used bytes are equal (capacities may differ).
 template <std::size_t N, std::size_t M>

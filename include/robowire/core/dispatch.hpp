@@ -190,8 +190,8 @@ template <class... M>
     auto& b = detail::built_value(r);  // each message is encoded straight into it
     result<std::size_t> n = fail(errc::unknown_message, 0);  // stays so only for a valueless variant
     detail::visit_held(v, [&](const auto& m) { n = encode_to(m, std::span<std::uint8_t>(b.data(), out_t::capacity())); });
-    if (n) b.resize(*n);
-    else r = n.error();
+    if (n) detail::set_written_size(b, detail::built_value(n));
+    else r = detail::held_error(n);
     return r;
 }
 

@@ -21,7 +21,7 @@ template <described M>
 [[nodiscard]] constexpr result<std::size_t> encode_to(const M& m, std::span<std::uint8_t> out) noexcept {
     constexpr auto fields = std::make_index_sequence<detail::field_count_v<M>>{};
     const auto size = detail::encoded_size(m, fields);
-    if (!size) return size.error();
+    if (!size) return detail::held_error(size);
     error err{};
     if (!detail::check_record<M>(m, 0, err, fields)) return err;
     if (*size > out.size()) return detail::fail_at(errc::buffer_too_small, *size);
@@ -42,9 +42,9 @@ template <described M>
 [[nodiscard]] constexpr result<bytes<max_size_v<M>>> encode(const M& m) noexcept {
     result<bytes<max_size_v<M>>> r{std::in_place};
     auto& b = detail::built_value(r);
-    const auto n = encode_to(m, std::span<std::uint8_t>(b.data(), max_size_v<M>));
-    if (!n) { r = n.error(); return r; }
-    b.resize(*n);
+    auto n = encode_to(m, std::span<std::uint8_t>(b.data(), max_size_v<M>));
+    if (!n) { r = detail::held_error(n); return r; }
+    detail::set_written_size(b, detail::built_value(n));
     return r;
 }
 

@@ -206,6 +206,9 @@ namespace detail {
 // no access check (at -Os the check is a call that is not folded away).
 template <class T>
 constexpr T& built_value(result<T>& r) noexcept;
+// The error of a result the caller has just seen holding one: no access check.
+template <class T>
+constexpr error held_error(const result<T>& r) noexcept;
 }  // namespace detail
 
 // Either a T or an error; they share storage. T must be trivially copyable
@@ -260,6 +263,8 @@ public:
 private:
     template <class U>
     friend constexpr U& detail::built_value(result<U>& r) noexcept;
+    template <class U>
+    friend constexpr robowire::error detail::held_error(const result<U>& r) noexcept;
     constexpr void check(bool want_value) const noexcept(detail::access_noexcept) {
         if (ok_ == want_value) return;
         const robowire::error e = ok_ ? robowire::error{} : error_;
@@ -291,6 +296,8 @@ private:
 
 template <class T>
 constexpr T& detail::built_value(result<T>& r) noexcept { return r.value_.v; }
+template <class T>
+constexpr error detail::held_error(const result<T>& r) noexcept { return r.error_; }
 
 // Shorthand for returning an error (offsets past 65535 become 65535).
 constexpr error fail(errc code, std::size_t offset) noexcept {

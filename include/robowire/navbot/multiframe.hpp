@@ -155,7 +155,7 @@ class reassembler {
 public:
     constexpr result<reassembly> push(std::span<const std::uint8_t> frame_bytes) noexcept {
         const auto f = robowire::decode<frame>(frame_bytes);
-        if (!f) return f.error();
+        if (!f) return robowire::detail::held_error(f);
         return push(*f);
     }
 

@@ -109,7 +109,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr error encode_fields(const M& m, std::span<std::
 }
 // b becomes the frame of a message with key DEV << 8 | CMD and no parameters.
 ROBOWIRE_SIZE_NOINLINE constexpr void write_frame(bytes<frame_size>& b, std::uint16_t key) noexcept {
-    b.resize(frame_size);
+    robowire::detail::set_written_size(b, frame_size);
     std::uint8_t* out = b.data();
     out[0] = start1;
     out[1] = start2;
@@ -171,7 +171,7 @@ template <class Handler>
     result<std::optional<bytes<frame_size>>> r{std::in_place};  // no answer (yet)
     auto d = decode(request);
     if (!d) {
-        r = d.error();
+        r = robowire::detail::held_error(d);
         return r;
     }
     const auto reply = [&r](const auto& answer) {  // encoded straight into r
