@@ -22,9 +22,6 @@ template <class M>
 }
 
 namespace detail {
-// decode_into without the check of the fixed byte at offset Known, which a
-// dispatcher has matched already (no_offset: every fixed byte is checked).
-inline constexpr std::size_t no_offset = static_cast<std::size_t>(-1);
 // The fields of M, from an input whose fixed bytes and length are checked.
 template <class M>
 ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, std::span<const std::uint8_t> in) noexcept {
@@ -35,6 +32,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, std::span<const std::
     if constexpr (reports_trailing<M>) out.ignored_trailing_bytes = in.size() - known.size();
     return err;
 }
+// decode_into without the check of the fixed byte at offset Known, which a
+// dispatcher has matched already (no_offset: every fixed byte is checked).
 template <std::size_t Known, class M>
 ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const std::uint8_t> in) noexcept {
     constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input();

@@ -30,7 +30,9 @@ struct unit {
     std::string_view name{};
     double scale = 1.0;
     double offset = 0.0;
-    bool raw_is_physical = scale == 1.0 && offset == 0.0;  // raw values are already in this unit
+    // Raw values are already in this unit; worked out here, so that describe_error
+    // needs no floating point at run time.
+    bool raw_is_physical = scale == 1.0 && offset == 0.0;
 };
 
 // A byte every instance of a message has (command, marker); `code` is the

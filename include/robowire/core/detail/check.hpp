@@ -82,12 +82,11 @@ constexpr const Table& checked_table(const Table& t, std::bool_constant<MembersM
         prev_offset = f.offset;
         if (f.end() > end) end = f.end();
     });
-    for (const auto& b : t.fixed)
+    for (const auto& b : t.fixed) {
         if (limit != 0 && b.offset >= limit) table_fixed_byte_beyond_message_size(t.name, b.offset);
-    // error offsets are 16 bits
+        if (b.offset > 0xFFFF) table_message_longer_than_65535_bytes(t.name);  // error offsets are 16 bits
+    }
     if (end > 0xFFFF || limit > 0xFFFF) table_message_longer_than_65535_bytes(t.name);
-    for (const auto& b : t.fixed)
-        if (b.offset > 0xFFFF) table_message_longer_than_65535_bytes(t.name);
     if constexpr (!MembersMatch)
         table_leaves_struct_members_without_field(t.name, aggregate_member_count<typename Table::message_type>(),
                                                   Table::field_count + t.members_not_on_wire);

@@ -158,9 +158,11 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
     }
 }
 
+// No byte offset (check_fixed: no fixed byte is skipped).
+inline constexpr std::size_t no_offset = static_cast<std::size_t>(-1);
 // The first fixed byte of M that `in` has and gets wrong, as an error (code ok if none).
 // Skip: the offset of a fixed byte not to check (matched by a dispatcher already).
-template <class M, std::size_t Skip = static_cast<std::size_t>(-1), std::size_t... K>
+template <class M, std::size_t Skip = no_offset, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr error check_fixed(std::span<const std::uint8_t> in, std::index_sequence<K...>) noexcept {
     error e{};
     (void)((((table_v<M>.fixed[K].offset != Skip) && (table_v<M>.fixed[K].offset < in.size()) &&
