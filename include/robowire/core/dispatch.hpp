@@ -188,10 +188,11 @@ template <class... M>
     using out_t = bytes<variant_max_size_v<std::variant<M...>>>;
     result<out_t> r{std::in_place};
     auto& b = detail::built_value(r);  // each message is encoded straight into it
-    result<std::size_t> n = fail(errc::unknown_message, 0);  // stays so only for a valueless variant
-    detail::visit_held(v, [&](const auto& m) { n = encode_to(m, std::span<std::uint8_t>(b.data(), out_t::capacity())); });
-    if (n) detail::set_written_size(b, detail::built_value(n));
-    else r = detail::held_error(n);
+    error e = fail(errc::unknown_message, 0);  // stays so only for a valueless variant
+    std::size_t n = 0;
+    detail::visit_held(v, [&](const auto& m) { e = detail::encode_into(m, std::span<std::uint8_t>(b.data(), out_t::capacity()), n); });
+    if (e.code != errc::ok) r = e;
+    else detail::set_written_size(b, n);
     return r;
 }
 
