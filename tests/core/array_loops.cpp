@@ -1,6 +1,7 @@
 // Array fields at run time, whether coded unrolled or as loops
 // (ROBOWIRE_ARRAY_LOOPS; the ctest tests_optimized_for_size builds the whole
-// suite with 1 and -Os, which turns ROBOWIRE_OPTIMIZE_SIZE on).
+// suite with 1 and -Os, which turns ROBOWIRE_OPTIMIZE_SIZE on, and
+// tests_optimized_for_size_loops2 this file and the BuWizz3 tests with 2).
 #include <robowire/buwizz3.hpp>
 
 #include <catch2/catch.hpp>

@@ -38,15 +38,26 @@
 #define ROBOWIRE_SIZE_NOINLINE
 #endif
 
-// ROBOWIRE_ARRAY_LOOPS: 1 codes an array field (decode, encode) as one copy of
-// the element's code in a loop, 0 as one copy per element. Default 1 only when
-// optimizing for size for a core without unaligned loads (Cortex-M0/M0+), where
-// it saves flash; elsewhere the unrolled form is smaller or faster. Define it
-// to choose.
+// ROBOWIRE_ARRAY_LOOPS: how array fields are coded (decode, encode).
+//   0: one copy of the element's code per element (unrolled);
+//   1: one copy of the element's code in a loop, for every array;
+//   2: encoders loop over every array; decoders over arrays of 4 or more
+//      elements that are not records (short arrays and records unrolled).
+// Default when optimizing for size: 1 on cores without unaligned loads
+// (Cortex-M0/M0+), 2 elsewhere (Cortex-M3/M4/M7, ...); 0 otherwise (faster).
+// Define it to choose.
 #ifndef ROBOWIRE_ARRAY_LOOPS
 #if defined(__OPTIMIZE_SIZE__) && defined(__arm__) && !defined(__ARM_FEATURE_UNALIGNED)
 #define ROBOWIRE_ARRAY_LOOPS 1
+#elif defined(__OPTIMIZE_SIZE__)
+#define ROBOWIRE_ARRAY_LOOPS 2
 #else
 #define ROBOWIRE_ARRAY_LOOPS 0
 #endif
+#endif
+// A loop the compiler keeps rolled (ROBOWIRE_ARRAY_LOOPS).
+#if defined(__GNUC__) || defined(__clang__)
+#define ROBOWIRE_NO_UNROLL _Pragma("GCC unroll 1")
+#else
+#define ROBOWIRE_NO_UNROLL
 #endif

@@ -45,6 +45,16 @@ using field_t = std::remove_cvref_t<decltype(field_v<M, I>)>;
 template <class M>
 inline constexpr std::size_t fixed_count_v = table_v<M>.fixed.size();
 
+// Whether array field F is coded as one element's code in a loop (ROBOWIRE_ARRAY_LOOPS).
+template <class F>
+constexpr bool decode_in_loop() noexcept {
+    if constexpr (ROBOWIRE_ARRAY_LOOPS == 1) return F::count >= 2;
+    else if constexpr (ROBOWIRE_ARRAY_LOOPS == 2) return F::count >= 4 && F::kind != wire_kind::record;
+    else return false;
+}
+template <class F>
+constexpr bool encode_in_loop() noexcept { return ROBOWIRE_ARRAY_LOOPS != 0 && F::count >= 2; }
+
 // An array of bytes that needs no validation: copied whole (one memcpy at run time).
 template <class M, std::size_t I>
 inline constexpr bool plain_byte_array_v = [] {

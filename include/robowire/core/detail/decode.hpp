@@ -37,8 +37,9 @@ template <class M, std::size_t I, class V, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_array(V& v, std::span<const std::uint8_t> in, std::size_t off, error& err,
                                                    std::index_sequence<K...>) noexcept {
     constexpr std::size_t es = field_t<M, I>::element_size;
-    if constexpr (ROBOWIRE_ARRAY_LOOPS && sizeof...(K) >= 2) {
+    if constexpr (decode_in_loop<field_t<M, I>>()) {
         if (!std::is_constant_evaluated()) {  // one copy of the element's code, in a loop
+            ROBOWIRE_NO_UNROLL
             for (std::size_t k = 0; k < sizeof...(K); ++k)
                 if (!decode_element<M, I>(v[k], in, off + k * es, err)) return false;
             return true;

@@ -34,8 +34,9 @@ template <class M, std::size_t I, class V, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr bool check_array(const V& v, std::size_t off, error& err,
                                                   std::index_sequence<K...>) noexcept {
     constexpr std::size_t es = field_t<M, I>::element_size;
-    if constexpr (ROBOWIRE_ARRAY_LOOPS && sizeof...(K) >= 2) {
+    if constexpr (encode_in_loop<field_t<M, I>>()) {
         if (!std::is_constant_evaluated()) {
+            ROBOWIRE_NO_UNROLL
             for (std::size_t k = 0; k < sizeof...(K); ++k)
                 if (!check_element<M, I>(v[k], off + k * es, err)) return false;
             return true;
@@ -105,8 +106,9 @@ template <class M, std::size_t I, class V, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr void store_array(const V& v, std::span<std::uint8_t> out, std::size_t off,
                                                   std::index_sequence<K...>) noexcept {
     constexpr std::size_t es = field_t<M, I>::element_size;
-    if constexpr (ROBOWIRE_ARRAY_LOOPS && sizeof...(K) >= 2) {
+    if constexpr (encode_in_loop<field_t<M, I>>()) {
         if (!std::is_constant_evaluated()) {
+            ROBOWIRE_NO_UNROLL
             for (std::size_t k = 0; k < sizeof...(K); ++k) store_element<M, I>(v[k], out, off + k * es);
             return;
         }
