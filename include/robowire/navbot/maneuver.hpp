@@ -77,7 +77,7 @@ enum class sign_encoding : std::uint8_t {
 
 namespace impl {
 // Rewrites every i8 field of maneuver's table between the two encodings.
-template <bool ToSignMagnitude>
+template <bool ToSignMagnitude, class Deferred = void>
 constexpr void convert_signed(std::span<std::uint8_t> b) noexcept {
     for_each_field<maneuver>([&](const auto& f) {
         if constexpr (std::remove_cvref_t<decltype(f)>::kind == wire_kind::i8) {
@@ -91,21 +91,26 @@ constexpr void convert_signed(std::span<std::uint8_t> b) noexcept {
 }  // namespace impl
 
 // Encodes with the chosen sign encoding (robowire::encode(m) is two's complement).
+// (A template only so that nothing is instantiated in a translation unit that does not call it.)
+template <class Deferred = void>
 [[nodiscard]] constexpr result<bytes<frame_size>> encode(const maneuver& m,
                                                          sign_encoding enc = sign_encoding::twos_complement) noexcept {
-    auto r = robowire::encode(m);
+    auto r = robowire::encode(robowire::detail::deferred<Deferred>(m));
     if (r && enc == sign_encoding::sign_magnitude) impl::convert_signed<true>(r->span());
     return r;
 }
 
 // Decodes with the chosen sign encoding (robowire::decode<maneuver> is two's complement).
+// (A template only so that nothing is instantiated in a translation unit that does not call it.)
+template <class Deferred = void>
 [[nodiscard]] constexpr result<maneuver> decode_maneuver(std::span<const std::uint8_t> in,
                                                          sign_encoding enc = sign_encoding::twos_complement) noexcept {
-    if (enc == sign_encoding::twos_complement || in.size() != frame_size) return robowire::decode<maneuver>(in);
+    if (enc == sign_encoding::twos_complement || in.size() != frame_size)
+        return robowire::decode<maneuver>(robowire::detail::deferred<Deferred>(in));
     std::array<std::uint8_t, frame_size> copy{};
     for (std::size_t i = 0; i < frame_size; ++i) copy[i] = in[i];
-    impl::convert_signed<false>(copy);
-    return robowire::decode<maneuver>(copy);
+    impl::convert_signed<false, Deferred>(copy);
+    return robowire::decode<maneuver>(robowire::detail::deferred<Deferred>(std::span<const std::uint8_t>(copy)));
 }
 
 }  // namespace robowire::navbot

@@ -154,7 +154,7 @@ template <std::size_t Capacity>
 class reassembler {
 public:
     constexpr result<reassembly> push(std::span<const std::uint8_t> frame_bytes) noexcept {
-        const auto f = robowire::decode<frame>(frame_bytes);
+        const auto f = robowire::decode<frame>(robowire::detail::deferred<reassembler>(frame_bytes));
         if (!f) return robowire::detail::held_error(f);
         return push(*f);
     }

@@ -169,7 +169,7 @@ template <class Handler>
 [[nodiscard]] constexpr result<std::optional<bytes<frame_size>>> serve(std::span<const std::uint8_t> request,
                                                                        Handler&& handler) {
     result<std::optional<bytes<frame_size>>> r{std::in_place};  // no answer (yet)
-    auto d = decode(request);
+    auto d = decode(robowire::detail::deferred<Handler>(request));  // instantiated with serve
     if (!d) {
         r = robowire::detail::held_error(d);
         return r;
