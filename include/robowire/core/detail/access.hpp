@@ -45,6 +45,10 @@ using field_t = std::remove_cvref_t<decltype(field_v<M, I>)>;
 template <class M>
 inline constexpr std::size_t fixed_count_v = table_v<M>.fixed.size();
 
+// Wire type W holds one number, enum, bool or float (not a record, text or tail).
+template <class W>
+inline constexpr bool scalar_wire_v = W::kind != wire_kind::record && W::kind != wire_kind::text && W::kind != wire_kind::tail;
+
 // Whether array field F is coded as one element's code in a loop (ROBOWIRE_ARRAY_LOOPS).
 template <class F>
 constexpr bool decode_in_loop() noexcept {

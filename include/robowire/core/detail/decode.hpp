@@ -25,6 +25,39 @@ namespace robowire::detail {
 // are arguments (constants again once inlined), so that each field is
 // instantiated once, not once per array element or record position.
 
+// A number, enum, bool or float of wire type W, valid in [Min, Max]: shared
+// by every field of the same kind and range (fewer functions to compile).
+template <class W, std::int64_t Min, std::int64_t Max, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_scalar(E& v, std::span<const std::uint8_t> in, std::size_t off,
+                                                    error& err) noexcept {
+    if constexpr (W::kind == wire_kind::f32le) {
+        v = load_le<float>(in.data() + off);
+        return true;
+    } else {
+        std::int64_t raw = 0;
+        if constexpr (W::kind == wire_kind::bits) raw = get_bits(in[off], W::lo, W::width);
+        else raw = load_le<typename W::raw_type>(in.data() + off);
+        if constexpr (std::is_enum_v<E>) {
+            const auto e = static_cast<E>(raw);
+            if (!is_valid_enum(e)) { err = fail_at(errc::invalid_enum, off); return false; }
+            v = e;
+        } else {
+            constexpr range full = [] {  // what the wire bytes can hold
+                if constexpr (W::kind == wire_kind::bits) return range{0, low_mask(W::width)};
+                else return range{std::numeric_limits<typename W::raw_type>::min(), std::numeric_limits<typename W::raw_type>::max()};
+            }();
+            if constexpr (Min > full.min || Max < full.max) {
+                if (!in_range<Min, Max, full.min, full.max>(raw)) {
+                    err = fail_at(errc::value_out_of_range, off);
+                    return false;
+                }
+            }
+            if constexpr (std::is_same_v<E, bool>) v = raw != 0;
+            else v = static_cast<E>(raw);
+        }
+        return true;
+    }
+}
 template <class M, std::size_t I, class E>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::uint8_t> in, std::size_t off,
                                                      error& err) noexcept;
@@ -81,6 +114,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::ui
             member = tmp;
             return true;
         }
+    } else if constexpr (!F::is_array && scalar_wire_v<typename F::wire_type>) {
+        return decode_scalar<typename F::wire_type, f.valid.min, f.valid.max>(member, in, off, err);
     } else {
         return decode_value<M, I>(member, in, off, err);
     }
@@ -129,33 +164,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
         v.clear();
         (void)v.append(in.subspan(off, end > off ? end - off : 0));
         return true;
-    } else if constexpr (W::kind == wire_kind::f32le) {
-        v = load_le<float>(in.data() + off);
-        return true;
     } else {
-        std::int64_t raw = 0;
-        if constexpr (W::kind == wire_kind::bits) raw = get_bits(in[off], W::lo, W::width);
-        else raw = load_le<typename W::raw_type>(in.data() + off);
-        if constexpr (std::is_enum_v<E>) {
-            const auto e = static_cast<E>(raw);
-            if (!is_valid_enum(e)) { err = fail_at(errc::invalid_enum, off); return false; }
-            v = e;
-        } else {
-            constexpr range valid = f.valid;
-            constexpr range full = [] {  // what the wire bytes can hold
-                if constexpr (W::kind == wire_kind::bits) return range{0, low_mask(W::width)};
-                else return range{std::numeric_limits<typename W::raw_type>::min(), std::numeric_limits<typename W::raw_type>::max()};
-            }();
-            if constexpr (valid.min > full.min || valid.max < full.max) {
-                if (!in_range<valid.min, valid.max, full.min, full.max>(raw)) {
-                    err = fail_at(errc::value_out_of_range, off);
-                    return false;
-                }
-            }
-            if constexpr (std::is_same_v<E, bool>) v = raw != 0;
-            else v = static_cast<E>(raw);
-        }
-        return true;
+        return decode_scalar<W, f.valid.min, f.valid.max>(v, in, off, err);
     }
 }
 

@@ -23,6 +23,50 @@ namespace robowire::detail {
 // ---- encode, in two passes: check every field (the first error wins), then
 // write them all without a branch, so that the stores can merge.
 
+// Checks and stores of a number, enum, bool or float of wire type W, valid in
+// [Min, Max]: shared by every field of the same kind and range.
+template <class W, std::int64_t Min, std::int64_t Max, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_scalar(const E& v, std::size_t off, error& err) noexcept {
+    if constexpr (W::kind == wire_kind::f32le) {
+        return true;
+    } else if constexpr (std::is_enum_v<E>) {
+        if (!is_valid_enum(v)) { err = fail_at(errc::invalid_enum, off); return false; }
+        return true;
+    } else {
+        if constexpr (W::kind == wire_kind::bits || std::is_same_v<E, bool> ||
+                      Min > std::int64_t{std::numeric_limits<E>::min()} ||
+                      Max < std::int64_t{std::numeric_limits<E>::max()}) {
+            constexpr std::int64_t lo = std::numeric_limits<E>::min(), hi = std::numeric_limits<E>::max();
+            bool valid = true;
+            if constexpr (Max >= hi) valid = static_cast<std::int64_t>(v) >= Min;  // one bound: one compare
+            else if constexpr (Min <= lo) valid = static_cast<std::int64_t>(v) <= Max;
+            else valid = in_range<Min, Max, lo, hi>(static_cast<std::int64_t>(v));
+            if (!valid) {
+                err = fail_at(errc::value_out_of_range, off);
+                return false;
+            }
+        }
+        return true;
+    }
+}
+template <class W, class E>
+ROBOWIRE_ALWAYS_INLINE constexpr void store_scalar(const E& v, std::span<std::uint8_t> out, std::size_t off) noexcept {
+    if constexpr (W::kind == wire_kind::f32le) {
+        store_le<float>(out.data() + off, v);
+    } else {
+        std::uint64_t raw = 0;
+        if constexpr (std::is_enum_v<E>) raw = static_cast<std::uint64_t>(static_cast<std::underlying_type_t<E>>(v));
+        else raw = static_cast<std::uint64_t>(v);
+        if constexpr (W::kind == wire_kind::bits) {
+            constexpr auto mask = static_cast<unsigned>(low_mask(W::width) << W::lo);
+            out[off] = static_cast<std::uint8_t>((static_cast<unsigned>(out[off]) & ~mask) |
+                                                 ((static_cast<unsigned>(raw) << W::lo) & mask));
+        } else {
+            store_le<typename W::raw_type>(out.data() + off, static_cast<typename W::raw_type>(raw));
+        }
+    }
+}
+
 template <class M, std::size_t I, class E>
 ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off, error& err) noexcept;
 
@@ -57,7 +101,10 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_field(const M& m, std::size_t base, 
     const std::size_t off = base + field_v<M, I>.offset;
     constexpr auto member_ptr = field_v<M, I>.member;
     const auto& member = m.*member_ptr;
-    if constexpr (field_t<M, I>::is_optional) return !member || check_value<M, I>(*member, off, err);
+    using F = field_t<M, I>;
+    if constexpr (F::is_optional) return !member || check_value<M, I>(*member, off, err);
+    else if constexpr (!F::is_array && scalar_wire_v<typename F::wire_type>)
+        return check_scalar<typename F::wire_type, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(member, off, err);
     else return check_value<M, I>(member, off, err);
 }
 
@@ -78,20 +125,10 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off,
         for (std::size_t i = 0; i < s.size(); ++i)
             if (s[i] == '\0') { err = fail_at(errc::value_out_of_range, off + i); return false; }
         return true;
-    } else if constexpr (W::kind == wire_kind::tail || W::kind == wire_kind::f32le) {
-        return true;
-    } else if constexpr (std::is_enum_v<E>) {
-        if (!is_valid_enum(v)) { err = fail_at(errc::invalid_enum, off); return false; }
+    } else if constexpr (W::kind == wire_kind::tail) {
         return true;
     } else {
-        constexpr range valid = field_v<M, I>.valid;
-        if constexpr (W::kind == wire_kind::bits || std::is_same_v<E, bool> ||
-                      valid.min > std::int64_t{std::numeric_limits<E>::min()} ||
-                      valid.max < std::int64_t{std::numeric_limits<E>::max()}) {
-            const auto raw = static_cast<std::int64_t>(v);
-            if (raw < valid.min || raw > valid.max) { err = fail_at(errc::value_out_of_range, off); return false; }
-        }
-        return true;
+        return check_scalar<W, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(v, off, err);
     }
 }
 
@@ -134,8 +171,11 @@ ROBOWIRE_ALWAYS_INLINE constexpr void store_field(const M& m, std::span<std::uin
     const std::size_t off = base + field_v<M, I>.offset;
     constexpr auto member_ptr = field_v<M, I>.member;
     const auto& member = m.*member_ptr;
-    if constexpr (field_t<M, I>::is_optional) {
+    using F = field_t<M, I>;
+    if constexpr (F::is_optional) {
         if (member) store_value<M, I>(*member, out, off);
+    } else if constexpr (!F::is_array && scalar_wire_v<typename F::wire_type>) {
+        store_scalar<typename F::wire_type>(member, out, off);
     } else {
         store_value<M, I>(member, out, off);
     }
@@ -160,19 +200,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr void store_element(const E& v, std::span<std::u
         for (std::size_t i = s.size(); i < text_traits<E>::size; ++i) out[off + i] = 0;  // padding
     } else if constexpr (W::kind == wire_kind::tail) {
         for (std::size_t i = 0; i < v.size(); ++i) out[off + i] = v[i];
-    } else if constexpr (W::kind == wire_kind::f32le) {
-        store_le<float>(out.data() + off, v);
     } else {
-        std::uint64_t raw = 0;
-        if constexpr (std::is_enum_v<E>) raw = static_cast<std::uint64_t>(static_cast<std::underlying_type_t<E>>(v));
-        else raw = static_cast<std::uint64_t>(v);
-        if constexpr (W::kind == wire_kind::bits) {
-            constexpr auto mask = static_cast<unsigned>(low_mask(W::width) << W::lo);
-            out[off] = static_cast<std::uint8_t>((static_cast<unsigned>(out[off]) & ~mask) |
-                                                 ((static_cast<unsigned>(raw) << W::lo) & mask));
-        } else {
-            store_le<typename W::raw_type>(out.data() + off, static_cast<typename W::raw_type>(raw));
-        }
+        store_scalar<W>(v, out, off);
     }
 }
 
