@@ -31,6 +31,9 @@
 #define ROBOWIRE_OPTIMIZE_SIZE 0
 #endif
 #endif
+#if ROBOWIRE_OPTIMIZE_SIZE != 0 && ROBOWIRE_OPTIMIZE_SIZE != 1
+#error "ROBOWIRE_OPTIMIZE_SIZE must be 0 or 1"
+#endif
 // Keeps a helper shared by several codecs out of line under ROBOWIRE_OPTIMIZE_SIZE.
 #if ROBOWIRE_OPTIMIZE_SIZE && (defined(__GNUC__) || defined(__clang__))
 #define ROBOWIRE_SIZE_NOINLINE [[gnu::noinline]]
@@ -54,6 +57,9 @@
 #else
 #define ROBOWIRE_ARRAY_LOOPS 0
 #endif
+#endif
+#if ROBOWIRE_ARRAY_LOOPS != 0 && ROBOWIRE_ARRAY_LOOPS != 1 && ROBOWIRE_ARRAY_LOOPS != 2
+#error "ROBOWIRE_ARRAY_LOOPS must be 0, 1 or 2"
 #endif
 // A loop the compiler keeps rolled (ROBOWIRE_ARRAY_LOOPS).
 #if defined(__GNUC__) || defined(__clang__)
