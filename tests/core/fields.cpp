@@ -1,5 +1,6 @@
 #include <robowire/core/fields.hpp>
 #include <robowire/buwizz3/commands.hpp>
+#include <robowire/buwizz3/status.hpp>
 #include <robowire/navbot/maneuver.hpp>
 
 #include <array>
@@ -75,4 +76,18 @@ TEST_CASE("describe_error writes the field, its range and the offset", "[core][f
     STATIC_REQUIRE(field_of<&nb::maneuver::pitch>().raw_is_physical);
     std::array<char, 10> small{};
     CHECK(describe_error<nb::maneuver>(error{errc::value_out_of_range, 7}, small) == "maneuver.p");  // cut to fit
+}
+
+TEST_CASE("describe_error gives the lengths a message takes for too_short and too_long", "[core][fields]") {
+    std::array<char, 96> buf{};
+    // BuWizz3 status: 54 bytes, or 68 with the PID block, up to 129 with trailing bytes (docs/buwizz3.md)
+    CHECK(describe_error<robowire::buwizz3::status>(error{errc::too_short, 4}, buf) ==
+          "status: input too short (54 or 68..129 bytes) at byte 4");
+    // LED status 0x36: the command alone, with 4 colours (13), with blinking too (17)
+    CHECK(describe_error<robowire::buwizz3::set_led_status>(error{errc::too_long, 17}, buf) ==
+          "set_led_status: input too long (1, 13 or 17 bytes) at byte 17");
+    CHECK(describe(error{errc::too_long, 20}, buf) == "maneuver: input too long (20 bytes) at byte 20");
+    // a length error inside an optional block is about that block
+    CHECK(describe_error<robowire::buwizz3::status>(error{errc::bad_length, 54}, buf) ==
+          "status.pid_state: length matches no form of the message at byte 54");
 }

@@ -128,7 +128,9 @@ template <auto Member, class M, class V>
 // Writes "message.field: <error> (valid min..max unit) at byte N" (or
 // without the field part when no field is at the offset) into `buf`, cut to
 // fit; returns the text written. The range is in raw values: "raw" instead of
-// the unit when the unit scales them. For logs; no heap.
+// the unit when the unit scales them. too_short / too_long name no field and
+// give the lengths M takes: "status: input too short (54 or 68..129 bytes)
+// at byte 4". For logs; no heap.
 template <described M>
 constexpr std::string_view describe_error(const error& e, std::span<char> buf) noexcept {
     std::size_t n = 0;
@@ -144,14 +146,44 @@ constexpr std::string_view describe_error(const error& e, std::span<char> buf) n
         do { digits[d++] = static_cast<char>('0' + u % 10); u /= 10; } while (u != 0);
         while (d > 0) put({&digits[--d], 1});
     };
+    const bool length = e.code == errc::too_short || e.code == errc::too_long;  // about the input, not a field
     const field_info f = field_at<M>(e);
     put(f.message);
-    if (f) {
+    if (f && !length) {
         put(".");
         put(f.name);
     }
     put(": ");
     put(to_string(e.code));
+    if (length) {  // the lengths M's decoder accepts, e.g. " (54 or 68..129 bytes)"
+        constexpr auto& t = table_v<M>;
+        constexpr std::size_t max_runs = [] {
+            std::size_t k = 1;
+            for_each_field<M>([&](const auto& g) { k += std::remove_cvref_t<decltype(g)>::is_optional; });
+            return k;
+        }();
+        std::size_t runs[max_runs][2] = {};
+        std::size_t count = 0;
+        for (std::size_t len = t.min_size(); len <= t.max_input(); ++len) {
+            bool ok = true;  // not inside an optional block
+            for_each_field<M>([&](const auto& g) {
+                if (std::remove_cvref_t<decltype(g)>::is_optional && len > g.offset && len < g.end()) ok = false;
+            });
+            if (!ok) continue;
+            if (count > 0 && runs[count - 1][1] + 1 == len) runs[count - 1][1] = len;
+            else if (count < max_runs) { runs[count][0] = runs[count][1] = len; ++count; }
+        }
+        put(" (");
+        for (std::size_t i = 0; i < count; ++i) {
+            if (i > 0) put(i + 1 == count ? " or " : ", ");
+            put_int(static_cast<std::int64_t>(runs[i][0]));
+            if (runs[i][1] != runs[i][0]) {
+                put("..");
+                put_int(static_cast<std::int64_t>(runs[i][1]));
+            }
+        }
+        put(count == 1 && runs[0][0] == runs[0][1] && runs[0][0] == 1 ? " byte)" : " bytes)");
+    }
     if (f && !f.is_enum && (e.code == errc::value_out_of_range)) {
         put(" (valid ");
         put_int(f.valid.min);
