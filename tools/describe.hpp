@@ -3,6 +3,7 @@
 // Included by the protocol modules only (buwizz3.cpp, navbot.cpp, osp.cpp).
 #pragma once
 
+#include <robowire/core/fields.hpp>
 #include <robowire/core/flag_bits.hpp>
 #include <robowire/robowire.hpp>
 
@@ -122,25 +123,14 @@ std::string flat_names(const std::string& prefix = {}) {
 // Every input length M's decoder accepts: "1, 13 or 17 bytes", "54 or 68-129 bytes".
 template <class M>
 std::string valid_lengths() {
-    constexpr auto& t = robowire::table_v<M>;
-    std::vector<std::pair<std::size_t, std::size_t>> runs;
-    for (std::size_t len = t.min_size(); len <= t.max_input(); ++len) {
-        bool ok = true;
-        robowire::for_each_field<M>([&](const auto& f) {
-            using F = std::remove_cvref_t<decltype(f)>;
-            if (F::is_optional && len > f.offset && len < f.end()) ok = false;
-        });
-        if (!ok) continue;
-        if (!runs.empty() && runs.back().second + 1 == len) runs.back().second = len;
-        else runs.emplace_back(len, len);
-    }
+    constexpr auto& runs = robowire::detail::length_runs_v<M>;
     std::string s;
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-        if (i) s += i + 1 == runs.size() ? " or " : ", ";
-        s += std::to_string(runs[i].first);
-        if (runs[i].second != runs[i].first) s += "-" + std::to_string(runs[i].second);
+    for (std::size_t i = 0; i < runs.count; ++i) {
+        if (i) s += i + 1 == runs.count ? " or " : ", ";
+        s += std::to_string(runs.run[i][0]);
+        if (runs.run[i][1] != runs.run[i][0]) s += "-" + std::to_string(runs.run[i][1]);
     }
-    const bool one = runs.size() == 1 && runs[0].first == runs[0].second && runs[0].first == 1;
+    const bool one = runs.count == 1 && runs.run[0][0] == 1 && runs.run[0][1] == 1;
     return s + (one ? " byte" : " bytes");
 }
 

@@ -125,6 +125,36 @@ template <auto Member, class M, class V>
     return out;
 }
 
+namespace detail {
+// The input lengths M's decoder accepts, as runs [first, last] in increasing
+// order (BuWizz3 status: {54, 54}, {68, 129}): every length from min_size()
+// to max_input() that does not end inside an optional block.
+template <std::size_t N>
+struct length_runs {
+    std::size_t run[N][2] = {};
+    std::size_t count = 0;
+};
+template <class M>
+inline constexpr auto length_runs_v = [] {
+    constexpr std::size_t max_runs = [] {  // one more than the optional blocks
+        std::size_t k = 1;
+        for_each_field<M>([&](const auto& g) { k += std::remove_cvref_t<decltype(g)>::is_optional; });
+        return k;
+    }();
+    length_runs<max_runs> out{};
+    for (std::size_t len = table_v<M>.min_size(); len <= table_v<M>.max_input(); ++len) {
+        bool ok = true;
+        for_each_field<M>([&](const auto& g) {
+            if (std::remove_cvref_t<decltype(g)>::is_optional && len > g.offset && len < g.end()) ok = false;
+        });
+        if (!ok) continue;
+        if (out.count > 0 && out.run[out.count - 1][1] + 1 == len) out.run[out.count - 1][1] = len;
+        else { out.run[out.count][0] = out.run[out.count][1] = len; ++out.count; }
+    }
+    return out;
+}();
+}  // namespace detail
+
 // Writes "message.field: <error> (valid min..max unit) at byte N" (or
 // without the field part when no field is at the offset) into `buf`, cut to
 // fit; returns the text written. The range is in raw values: "raw" instead of
@@ -156,33 +186,17 @@ constexpr std::string_view describe_error(const error& e, std::span<char> buf) n
     put(": ");
     put(to_string(e.code));
     if (length) {  // the lengths M's decoder accepts, e.g. " (54 or 68..129 bytes)"
-        constexpr auto& t = table_v<M>;
-        constexpr std::size_t max_runs = [] {
-            std::size_t k = 1;
-            for_each_field<M>([&](const auto& g) { k += std::remove_cvref_t<decltype(g)>::is_optional; });
-            return k;
-        }();
-        std::size_t runs[max_runs][2] = {};
-        std::size_t count = 0;
-        for (std::size_t len = t.min_size(); len <= t.max_input(); ++len) {
-            bool ok = true;  // not inside an optional block
-            for_each_field<M>([&](const auto& g) {
-                if (std::remove_cvref_t<decltype(g)>::is_optional && len > g.offset && len < g.end()) ok = false;
-            });
-            if (!ok) continue;
-            if (count > 0 && runs[count - 1][1] + 1 == len) runs[count - 1][1] = len;
-            else if (count < max_runs) { runs[count][0] = runs[count][1] = len; ++count; }
-        }
+        constexpr auto& runs = detail::length_runs_v<M>;
         put(" (");
-        for (std::size_t i = 0; i < count; ++i) {
-            if (i > 0) put(i + 1 == count ? " or " : ", ");
-            put_int(static_cast<std::int64_t>(runs[i][0]));
-            if (runs[i][1] != runs[i][0]) {
+        for (std::size_t i = 0; i < runs.count; ++i) {
+            if (i > 0) put(i + 1 == runs.count ? " or " : ", ");
+            put_int(static_cast<std::int64_t>(runs.run[i][0]));
+            if (runs.run[i][1] != runs.run[i][0]) {
                 put("..");
-                put_int(static_cast<std::int64_t>(runs[i][1]));
+                put_int(static_cast<std::int64_t>(runs.run[i][1]));
             }
         }
-        put(count == 1 && runs[0][0] == runs[0][1] && runs[0][0] == 1 ? " byte)" : " bytes)");
+        put(runs.count == 1 && runs.run[0][0] == 1 && runs.run[0][1] == 1 ? " byte)" : " bytes)");
     }
     if (f && !f.is_enum && (e.code == errc::value_out_of_range)) {
         put(" (valid ");
