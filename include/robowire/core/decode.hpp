@@ -43,14 +43,20 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const st
     if (in.size() > max) return fail_at(errc::too_long, max);
     return decode_body(out, in);
 }
+// decode_into's work, out of line: the input as pointer and size (a span that an
+// inlined caller passes on by value is copied through the stack first).
+template <class M>
+constexpr error decode_raw(M& out, const std::uint8_t* data, std::size_t size) noexcept {
+    return decode_checked<no_offset>(out, std::span<const std::uint8_t>(data, size));
+}
 }  // namespace detail
 
 // Decodes `in` into `out` (an existing object, e.g. one refreshed 20 times a
 // second): the same checks as decode(); returns errc::ok or the error. On an
 // error, `out`'s fields are unspecified.
 template <described M>
-[[nodiscard]] constexpr error decode_into(M& out, std::span<const std::uint8_t> in) noexcept {
-    return detail::decode_checked<detail::no_offset>(out, in);
+[[nodiscard]] ROBOWIRE_ALWAYS_INLINE constexpr error decode_into(M& out, std::span<const std::uint8_t> in) noexcept {
+    return detail::decode_raw(out, in.data(), in.size());
 }
 
 // Decodes a message of type M from `in`; every length, fixed byte, range and

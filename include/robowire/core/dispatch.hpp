@@ -145,26 +145,36 @@ ROBOWIRE_ALWAYS_INLINE constexpr error check_alternative(std::size_t index, std:
 }
 }  // namespace detail
 
+namespace detail {
+// decode_variant's work, out of line: the input as pointer and size (a span that
+// an inlined caller passes on by value is copied through the stack first).
+template <class Variant, std::size_t KeyOffset>
+constexpr result<Variant> decode_variant_at(const std::uint8_t* data, std::size_t size) noexcept {
+    const std::span<const std::uint8_t> in(data, size);
+    result<Variant> r{std::in_place};
+    if (in.size() <= KeyOffset) {
+        r = fail(errc::too_short, in.size());
+    } else if (const std::size_t index = index_of_key<Variant, KeyOffset>(in[KeyOffset]);
+               index == std::variant_size_v<Variant>) {
+        r = fail(errc::unknown_message, KeyOffset);
+    } else if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
+        constexpr auto all = std::make_index_sequence<std::variant_size_v<Variant>>{};
+        if (const error e = check_alternative<Variant, KeyOffset>(index, in, all); e.code != errc::ok) r = e;
+        else decode_index<KeyOffset, true>(r, index, in, all);
+    } else {
+        decode_index<KeyOffset, false>(r, index, in, std::make_index_sequence<std::variant_size_v<Variant>>{});
+    }
+    return r;
+}
+}  // namespace detail
+
 // Decodes `in` as the alternative of Variant whose fixed byte at KeyOffset
 // matches (alternatives sharing a key do not compile); unknown_message (at KeyOffset) if
 // none does, too_short if the input does not reach the key. The message is
 // decoded in place, without copies.
 template <class Variant, std::size_t KeyOffset = 0>
-[[nodiscard]] constexpr result<Variant> decode_variant(std::span<const std::uint8_t> in) noexcept {
-    result<Variant> r{std::in_place};
-    if (in.size() <= KeyOffset) {
-        r = fail(errc::too_short, in.size());
-    } else if (const std::size_t index = detail::index_of_key<Variant, KeyOffset>(in[KeyOffset]);
-               index == std::variant_size_v<Variant>) {
-        r = fail(errc::unknown_message, KeyOffset);
-    } else if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
-        constexpr auto all = std::make_index_sequence<std::variant_size_v<Variant>>{};
-        if (const error e = detail::check_alternative<Variant, KeyOffset>(index, in, all); e.code != errc::ok) r = e;
-        else detail::decode_index<KeyOffset, true>(r, index, in, all);
-    } else {
-        detail::decode_index<KeyOffset, false>(r, index, in, std::make_index_sequence<std::variant_size_v<Variant>>{});
-    }
-    return r;
+[[nodiscard]] ROBOWIRE_ALWAYS_INLINE constexpr result<Variant> decode_variant(std::span<const std::uint8_t> in) noexcept {
+    return detail::decode_variant_at<Variant, KeyOffset>(in.data(), in.size());
 }
 
 namespace detail {
@@ -190,7 +200,7 @@ template <class... M>
     auto& b = detail::built_value(r);  // each message is encoded straight into it
     error e = fail(errc::unknown_message, 0);  // stays so only for a valueless variant
     std::size_t n = 0;
-    detail::visit_held(v, [&](const auto& m) { e = detail::encode_into(m, std::span<std::uint8_t>(b.data(), out_t::capacity()), n); });
+    detail::visit_held(v, [&](const auto& m) { e = detail::encode_into(m, b.data(), out_t::capacity(), n); });
     if (e.code != errc::ok) r = e;
     else detail::set_written_size(b, n);
     return r;

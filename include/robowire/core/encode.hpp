@@ -15,10 +15,13 @@ namespace robowire {
 
 
 namespace detail {
-// Encodes m into out (at most `out.size()` bytes) and sets `written`: the
-// error, if any, is returned in a register and `out` is left unchanged.
+// Encodes m into out_data (at most out_size bytes) and sets `written`: the
+// error, if any, is returned in a register and the output is left unchanged.
+// Pointer and size, not a span: a span passed on by value from an inlined
+// caller is copied through the stack first.
 template <described M>
-constexpr error encode_into(const M& m, std::span<std::uint8_t> out, std::size_t& written) noexcept {
+constexpr error encode_into(const M& m, std::uint8_t* out_data, std::size_t out_size, std::size_t& written) noexcept {
+    const std::span<std::uint8_t> out(out_data, out_size);
     constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
     auto size = encoded_size(m, fields);
     if (!size) return held_error(size);
@@ -45,7 +48,7 @@ constexpr error encode_into(const M& m, std::span<std::uint8_t> out, std::size_t
 template <described M>
 [[nodiscard]] constexpr result<std::size_t> encode_to(const M& m, std::span<std::uint8_t> out) noexcept {
     std::size_t n = 0;
-    if (const error e = detail::encode_into(m, out, n); e.code != errc::ok) return e;
+    if (const error e = detail::encode_into(m, out.data(), out.size(), n); e.code != errc::ok) return e;
     return n;
 }
 
@@ -55,7 +58,7 @@ template <described M>
     result<bytes<max_size_v<M>>> r{std::in_place};
     auto& b = detail::built_value(r);
     std::size_t n = 0;
-    if (const error e = detail::encode_into(m, std::span<std::uint8_t>(b.data(), max_size_v<M>), n); e.code != errc::ok)
+    if (const error e = detail::encode_into(m, b.data(), max_size_v<M>, n); e.code != errc::ok)
         r = e;
     else
         detail::set_written_size(b, n);
