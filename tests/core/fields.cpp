@@ -1,12 +1,17 @@
 #include <robowire/core/fields.hpp>
 #include <robowire/buwizz3/commands.hpp>
+#include <robowire/buwizz3/decode.hpp>
 #include <robowire/buwizz3/status.hpp>
+#include <robowire/navbot/decode.hpp>
 #include <robowire/navbot/maneuver.hpp>
+#include <robowire/osp/messages.hpp>
 
 #include <array>
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <string_view>
+#include <type_traits>
+#include <variant>
 
 using namespace robowire;
 namespace nb = robowire::navbot;
@@ -87,7 +92,38 @@ TEST_CASE("describe_error gives the lengths a message takes for too_short and to
     CHECK(describe_error<robowire::buwizz3::set_led_status>(error{errc::too_long, 17}, buf) ==
           "set_led_status: input too long (1, 13 or 17 bytes) at byte 17");
     CHECK(describe(error{errc::too_long, 20}, buf) == "maneuver: input too long (20 bytes) at byte 20");
-    // a length error inside an optional block is about that block
+    // a length error inside an optional block names that block, and the lengths too
     CHECK(describe_error<robowire::buwizz3::status>(error{errc::bad_length, 54}, buf) ==
-          "status.pid_state: length matches no form of the message at byte 54");
+          "status.pid_state: length matches no form of the message (54 or 68..129 bytes) at byte 54");
+    CHECK(describe_error<robowire::buwizz3::set_led_status>(error{errc::bad_length, 13}, buf) ==
+          "set_led_status.blink: length matches no form of the message (1, 13 or 17 bytes) at byte 13");
+}
+
+namespace {
+// The longest describe_error line of a length error of any message of Variant.
+template <class... M>
+std::size_t longest_length_error(std::variant<M...>*) {
+    std::size_t longest = 0;
+    const auto measure = [&]<class T>(std::type_identity<T>) {
+        std::array<char, 200> buf{};
+        for (const errc code : {errc::too_short, errc::too_long}) {
+            const auto s = describe_error<T>(error{code, 4}, buf);
+            longest = s.size() > longest ? s.size() : longest;
+        }
+        for_each_field<T>([&](const auto& f) {
+            if (!f.is_optional) return;
+            const auto s = describe_error<T>(error{errc::bad_length, static_cast<std::uint16_t>(f.offset)}, buf);
+            longest = s.size() > longest ? s.size() : longest;
+        });
+    };
+    (measure(std::type_identity<M>{}), ...);
+    return longest;
+}
+}  // namespace
+
+TEST_CASE("describe_error's length errors fit the README's 96-byte buffer", "[core][fields]") {
+    CHECK(longest_length_error(static_cast<robowire::buwizz3::command*>(nullptr)) < 96);
+    CHECK(longest_length_error(static_cast<robowire::buwizz3::notification*>(nullptr)) < 96);
+    CHECK(longest_length_error(static_cast<robowire::osp::message*>(nullptr)) < 96);
+    CHECK(longest_length_error(static_cast<robowire::navbot::message*>(nullptr)) < 96);
 }

@@ -160,7 +160,8 @@ inline constexpr auto length_runs_v = [] {
 // fit; returns the text written. The range is in raw values: "raw" instead of
 // the unit when the unit scales them. too_short / too_long name no field and
 // give the lengths M takes: "status: input too short (54 or 68..129 bytes)
-// at byte 4". For logs; no heap.
+// at byte 4"; bad_length names the optional block cut short and gives them
+// too. For logs; no heap.
 template <described M>
 constexpr std::string_view describe_error(const error& e, std::span<char> buf) noexcept {
     std::size_t n = 0;
@@ -185,7 +186,7 @@ constexpr std::string_view describe_error(const error& e, std::span<char> buf) n
     }
     put(": ");
     put(to_string(e.code));
-    if (length) {  // the lengths M's decoder accepts, e.g. " (54 or 68..129 bytes)"
+    if (length || e.code == errc::bad_length) {  // the lengths M's decoder accepts, e.g. " (54 or 68..129 bytes)"
         constexpr auto& runs = detail::length_runs_v<M>;
         put(" (");
         for (std::size_t i = 0; i < runs.count; ++i) {
