@@ -51,6 +51,8 @@ namespace detail {
 // written through data(): no clamp, no zero fill (the codecs' encoders).
 template <std::size_t N>
 constexpr void set_written_size(bytes<N>& b, std::size_t n) noexcept;
+// Tag of the bytes constructor that leaves the bytes and the size unset.
+struct unset_t {};
 }  // namespace detail
 
 // Up to N bytes, stored inline. Unused capacity is always zero, so the default
@@ -62,9 +64,12 @@ public:
     using iterator = std::uint8_t*;
     using const_iterator = const std::uint8_t*;
 
-    constexpr bytes() noexcept = default;
+    constexpr bytes() noexcept : data_{}, size_(0) {}
+    // Bytes and size unset: for an encoder that then writes all N bytes and
+    // calls detail::set_written_size (nothing is cleared first).
+    constexpr explicit bytes(detail::unset_t) noexcept {}
     // Precondition: init.size() <= N (excess is dropped).
-    constexpr bytes(std::initializer_list<std::uint8_t> init) noexcept { append(std::span(init.begin(), init.size())); }
+    constexpr bytes(std::initializer_list<std::uint8_t> init) noexcept : bytes() { append(std::span(init.begin(), init.size())); }
 
     // A buffer of `n` zero bytes (n clamped to N).
     static constexpr bytes zeros(std::size_t n) noexcept {
@@ -120,8 +125,8 @@ public:
     }
 
 private:
-    std::array<std::uint8_t, N> data_{};
-    std::size_t size_ = 0;
+    std::array<std::uint8_t, N> data_;  // set by every constructor but bytes(unset_t)
+    std::size_t size_;
     template <std::size_t M>
     friend constexpr void detail::set_written_size(bytes<M>& b, std::size_t n) noexcept;
 };

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <type_traits>
 #include <utility>
 
 #include "bytes.hpp"
@@ -55,7 +56,10 @@ template <described M>
 // Encodes m; out-of-range values and invalid enums are errors (never truncated).
 template <described M>
 [[nodiscard]] constexpr result<bytes<max_size_v<M>>> encode(const M& m) noexcept {
-    result<bytes<max_size_v<M>>> r{std::in_place};
+    using out_t = bytes<max_size_v<M>>;
+    // A message of one size writes every byte (cleared, then fields): nothing to clear first.
+    using init = std::conditional_t<min_size_v<M> == max_size_v<M>, detail::unset_t, out_t>;
+    result<out_t> r{std::in_place, init{}};
     auto& b = detail::built_value(r);
     std::size_t n = 0;
     if (const error e = detail::encode_into(m, b.data(), max_size_v<M>, n); e.code != errc::ok)

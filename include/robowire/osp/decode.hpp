@@ -144,7 +144,7 @@ template <class Message>
 // unknown_message for a variant left valueless by an exception.
 template <class Message = message>
 [[nodiscard]] constexpr result<bytes<frame_size>> encode(const std::type_identity_t<Message>& m) noexcept {
-    result<bytes<frame_size>> r{std::in_place};
+    result<bytes<frame_size>> r{std::in_place, robowire::detail::unset_t{}};  // write_frame sets every byte
     if constexpr (!robowire::detail::access_noexcept) {  // valueless only after an exception
         if (m.valueless_by_exception()) {
             r = fail(errc::unknown_message, 2);
@@ -175,7 +175,7 @@ template <class Handler>
         return r;
     }
     const auto reply = [&r](const auto& answer) {  // encoded straight into r
-        auto& out = robowire::detail::built_value(r).emplace();
+        auto& out = robowire::detail::built_value(r).emplace(robowire::detail::unset_t{});  // write_frame sets it
         impl::write_frame(out, impl::key_of<std::remove_cvref_t<decltype(answer)>>());
         if (const error e = impl::encode_fields(answer, std::span<std::uint8_t, frame_size>(out.data(), frame_size))) r = e;
     };

@@ -125,30 +125,18 @@ private:
         while (from < n && p[from] != start1) ++from;
         return from;
     }
-    // Is buf_[k] what a frame has at position k (start and end markers)?
-    constexpr bool prefix_ok(std::size_t k) const noexcept {
-        switch (k) {
-        case 0: return buf_[0] == start1;
-        case 1: return buf_[1] == start2;
-        case 8: return buf_[8] == end1;
-        case 9: return buf_[9] == end2;
-        default: return true;
-        }
-    }
-    // The candidate failed: drop its first byte and resume at the next start byte.
+    // The candidate failed: drop its first byte and resume at the next start
+    // byte, until what is left can still become a frame (a candidate is
+    // shorter than a frame here, so only its ST2 and EN1 need a look).
     constexpr void resync() noexcept {
-        ++false_starts_;
-        std::size_t from = 1;
         for (;;) {
+            ++false_starts_;
+            std::size_t from = 1;
             while (from < len_ && buf_[from] != start1) ++from;
             skipped_ += from;  // the dropped bytes
             for (std::size_t k = from; k < len_; ++k) buf_[k - from] = buf_[k];
             len_ -= from;
-            bool ok = true;
-            for (std::size_t k = 0; k < len_ && ok; ++k) ok = prefix_ok(k);
-            if (ok) return;
-            ++false_starts_;
-            from = 1;
+            if ((len_ < 2 || buf_[1] == start2) && (len_ < 9 || buf_[8] == end1)) return;
         }
     }
 
