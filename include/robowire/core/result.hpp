@@ -230,7 +230,8 @@ public:
         : value_(ROBOWIRE_OPTIMIZE_SIZE && sizeof(T) > 32 ? holder(std::in_place, 0) : holder(std::in_place)), ok_(true) {}
     // A value-holding result whose value is T(arg).
     template <class A>
-    constexpr result(std::in_place_t, const A& arg) noexcept(std::is_nothrow_constructible_v<T, const A&>) : value_(std::in_place, arg), ok_(true) {}
+    constexpr result(std::in_place_t, const A& arg) noexcept(std::is_nothrow_constructible_v<T, const A&>)
+        : value_(std::in_place, arg), ok_(true) {}
     // Turns this result into an error.
     constexpr result& operator=(robowire::error e) noexcept {
         if (std::is_constant_evaluated())
@@ -284,7 +285,8 @@ private:
         constexpr holder(std::in_place_t, int) noexcept(std::is_nothrow_default_constructible_v<T>) : v() {}
         constexpr holder(const T& val) noexcept : v(val) {}
         template <class A>
-        constexpr holder(std::in_place_t, const A& arg) noexcept(std::is_nothrow_constructible_v<T, const A&>) : v(arg) {}
+        constexpr holder(std::in_place_t, const A& arg) noexcept(std::is_nothrow_constructible_v<T, const A&>)
+            : v(arg) {}
     };
     union {
         holder value_;
