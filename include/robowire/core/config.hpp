@@ -46,14 +46,12 @@
 //   1: one copy of the element's code in a loop, for every array;
 //   2: encoders loop over every array; decoders over arrays of 4 or more
 //      elements that are not records (short arrays and records unrolled).
-// Default when optimizing for size: 1 on cores without unaligned loads
-// (Cortex-M0/M0+), 2 elsewhere (Cortex-M3/M4/M7, ...); 0 otherwise (faster).
+// Default 1 when optimizing for size (-Os / -Oz), else 0 (faster). 2 can be
+// smaller for a program that reads only a few fields of a large message.
 // Define it to choose.
 #ifndef ROBOWIRE_ARRAY_LOOPS
-#if defined(__OPTIMIZE_SIZE__) && defined(__arm__) && !defined(__ARM_FEATURE_UNALIGNED)
+#if defined(__OPTIMIZE_SIZE__)
 #define ROBOWIRE_ARRAY_LOOPS 1
-#elif defined(__OPTIMIZE_SIZE__)
-#define ROBOWIRE_ARRAY_LOOPS 2
 #else
 #define ROBOWIRE_ARRAY_LOOPS 0
 #endif
