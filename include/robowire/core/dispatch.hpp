@@ -152,12 +152,26 @@ ROBOWIRE_ALWAYS_INLINE constexpr error check_alternative(std::size_t index, std:
 }  // namespace detail
 
 namespace detail {
+// Index of the smallest alternative: the cheapest value a variant can start
+// with before the decoded alternative replaces it.
+template <class Variant>
+struct smallest_alternative;
+template <class... M>
+struct smallest_alternative<std::variant<M...>> {
+    static constexpr std::size_t value = [] {
+        constexpr std::size_t sizes[] = {sizeof(M)...};
+        std::size_t best = 0;
+        for (std::size_t i = 1; i < sizeof...(M); ++i)
+            if (sizes[i] < sizes[best]) best = i;
+        return best;
+    }();
+};
 // decode_variant's work, out of line: the input as pointer and size (a span that
 // an inlined caller passes on by value is copied through the stack first).
 template <class Variant, std::size_t KeyOffset>
 constexpr result<Variant> decode_variant_at(const std::uint8_t* data, std::size_t size) noexcept {
     const std::span<const std::uint8_t> in(data, size);
-    result<Variant> r{std::in_place};
+    result<Variant> r{std::in_place, std::in_place_index<smallest_alternative<Variant>::value>};  // replaced below
     if (in.size() <= KeyOffset) {
         r = fail(errc::too_short, in.size());
     } else if (const std::size_t index = index_of_key<Variant, KeyOffset>(in[KeyOffset]);
@@ -196,6 +210,19 @@ template <class... M> struct max_size_of<std::variant<M...>> {
 template <class Variant>
 inline constexpr std::size_t variant_max_size_v = detail::max_size_of<Variant>::value;
 
+namespace detail {
+// Encodes the alternative v holds into out_data (see encode_into);
+// unknown_message (offset 0) for a valueless variant.
+template <class Variant, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr error encode_held(const Variant& v, std::uint8_t* out_data, std::size_t out_size,
+                                                   std::size_t& written, std::index_sequence<I...>) noexcept {
+    error e = fail(errc::unknown_message, 0);
+    const std::size_t held = v.index();
+    (void)((held == I ? (e = encode_into(*std::get_if<I>(&v), out_data, out_size, written), true) : false) || ...);
+    return e;
+}
+}  // namespace detail
+
 // Encodes whichever message the variant holds, into the largest buffer any
 // needs. Errors: the message's; unknown_message (offset 0) for a variant left
 // valueless by an exception.
@@ -204,9 +231,8 @@ template <class... M>
     using out_t = bytes<variant_max_size_v<std::variant<M...>>>;
     result<out_t> r{std::in_place};
     auto& b = detail::built_value(r);  // each message is encoded straight into it
-    error e = fail(errc::unknown_message, 0);  // stays so only for a valueless variant
     std::size_t n = 0;
-    detail::visit_held(v, [&](const auto& m) { e = detail::encode_into(m, b.data(), out_t::capacity(), n); });
+    const error e = detail::encode_held(v, b.data(), out_t::capacity(), n, std::index_sequence_for<M...>{});
     if (e.code != errc::ok) r = e;
     else detail::set_written_size(b, n);
     return r;
