@@ -15,6 +15,10 @@
 namespace robowire::osp {
 
 class decode_result;
+namespace impl {
+template <class Message>
+constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) noexcept;
+}  // namespace impl
 // Decodes one 10-byte frame (below). A template, so that nothing is
 // instantiated in a translation unit that does not call it.
 template <class Message = message>
@@ -33,7 +37,7 @@ public:
 
 private:
     template <class Message>
-    friend constexpr decode_result decode(std::span<const std::uint8_t> in) noexcept;
+    friend constexpr decode_result impl::decode_at(const std::uint8_t* data, std::size_t size) noexcept;
     std::optional<osp::frame> frame_;
 };
 
@@ -124,19 +128,28 @@ ROBOWIRE_SIZE_NOINLINE constexpr void write_frame(bytes<frame_size>& b, std::uin
 // Decodes one 10-byte frame into whichever message its DEV and CMD name.
 // Errors: too_short / too_long, bad_header, bad_trailer, unknown_message
 // (offset 2), and the message's own field errors.
+namespace impl {
+// decode's work, out of line: the input as pointer and size (a span that an
+// inlined caller passes on by value is copied through the stack first).
 template <class Message>
-[[nodiscard]] constexpr decode_result decode(std::span<const std::uint8_t> in) noexcept {
-    static_assert(impl::keys_distinct<Message>(),
-                  "osp::decode: two messages share a DEV/CMD pair (the second could never be decoded)");
+constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) noexcept {
+    const std::span<const std::uint8_t> in(data, size);
     decode_result d{std::in_place};
-    if (const error e = impl::check_frame(in)) {
+    if (const error e = check_frame(in)) {
         d = e;
         return d;
     }
     d.frame_ = osp::frame{in[2], in[3], {in[4], in[5], in[6], in[7]}};
-    impl::decode_by_key(d, static_cast<std::uint16_t>(in[2] << 8 | in[3]), in,
-                        std::make_index_sequence<std::variant_size_v<Message>>{});
+    decode_by_key(d, static_cast<std::uint16_t>(in[2] << 8 | in[3]), in,
+                  std::make_index_sequence<std::variant_size_v<Message>>{});
     return d;
+}
+}  // namespace impl
+template <class Message>
+[[nodiscard]] ROBOWIRE_ALWAYS_INLINE constexpr decode_result decode(std::span<const std::uint8_t> in) noexcept {
+    static_assert(impl::keys_distinct<Message>(),
+                  "osp::decode: two messages share a DEV/CMD pair (the second could never be decoded)");
+    return impl::decode_at<Message>(in.data(), in.size());
 }
 
 // Encodes any message of the variant: one frame writer for all of them, then
