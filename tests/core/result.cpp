@@ -37,6 +37,25 @@ TEST_CASE("result<T> holds a value or an error with an offset", "[core][result]"
     CHECK(to_string(errc::bad_trailer) == "bad trailer byte");
 }
 
+namespace {
+struct meters {
+    int value = -1;
+    constexpr explicit meters(int v) noexcept : value(v) {}
+};
+struct may_throw {
+    explicit may_throw(int) {}
+};
+}  // namespace
+
+TEST_CASE("result(std::in_place, arg) holds T(arg)", "[core][result]") {
+    STATIC_REQUIRE(result<meters>(std::in_place, 42).value().value == 42);
+    STATIC_REQUIRE(result<meters>(std::in_place, 42).has_value());
+    STATIC_REQUIRE(std::is_nothrow_constructible_v<result<meters>, std::in_place_t, int>);
+    STATIC_REQUIRE(!std::is_nothrow_constructible_v<result<may_throw>, std::in_place_t, int>);
+    const result<meters> r(std::in_place, 7);
+    CHECK(r->value == 7);
+}
+
 TEST_CASE("error converts to bool like std::error_code", "[core][result]") {
     STATIC_REQUIRE(!error{});
     STATIC_REQUIRE(static_cast<bool>(error{errc::too_short, 0}));

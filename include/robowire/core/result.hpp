@@ -227,7 +227,7 @@ public:
     // initialisers run; nothing is cleared first, except for values over 32
     // bytes under ROBOWIRE_OPTIMIZE_SIZE): for codecs that then write every member.
     constexpr explicit result(std::in_place_t) noexcept(std::is_nothrow_default_constructible_v<T>)
-        : value_(ROBOWIRE_OPTIMIZE_SIZE && sizeof(T) > 32 ? holder(std::in_place, 0) : holder(std::in_place)), ok_(true) {}
+        : value_(ROBOWIRE_OPTIMIZE_SIZE && sizeof(T) > 32 ? holder(cleared{}) : holder(std::in_place)), ok_(true) {}
     // A value-holding result whose value is T(arg).
     template <class A>
     constexpr result(std::in_place_t, const A& arg) noexcept(std::is_nothrow_constructible_v<T, const A&>)
@@ -275,6 +275,7 @@ private:
         if (std::is_constant_evaluated()) detail::compile_time_bad_access(e.code);
         detail::bad_result_access(e);
     }
+    struct cleared {};  // tag of holder's value-initialising constructor
     struct holder {  // default-initialises its value (value-initialising would clear it first)
         T v;
         constexpr explicit holder(std::in_place_t) noexcept(std::is_nothrow_default_constructible_v<T>) {
@@ -282,7 +283,7 @@ private:
         }
         // Value-initialised (cleared, then member initialisers): one block clear,
         // less code than member by member (ROBOWIRE_OPTIMIZE_SIZE).
-        constexpr holder(std::in_place_t, int) noexcept(std::is_nothrow_default_constructible_v<T>) : v() {}
+        constexpr explicit holder(cleared) noexcept(std::is_nothrow_default_constructible_v<T>) : v() {}
         constexpr holder(const T& val) noexcept : v(val) {}
         template <class A>
         constexpr holder(std::in_place_t, const A& arg) noexcept(std::is_nothrow_constructible_v<T, const A&>)
