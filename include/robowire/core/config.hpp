@@ -31,7 +31,9 @@
 #define ROBOWIRE_OPTIMIZE_SIZE 0
 #endif
 #endif
-#if ROBOWIRE_OPTIMIZE_SIZE != 0 && ROBOWIRE_OPTIMIZE_SIZE != 1
+#if (ROBOWIRE_OPTIMIZE_SIZE + 0) == 0 && (0 - ROBOWIRE_OPTIMIZE_SIZE - 1) == 1  // defined as nothing
+#error "ROBOWIRE_OPTIMIZE_SIZE is defined empty: define it to 0 or 1"
+#elif ROBOWIRE_OPTIMIZE_SIZE != 0 && ROBOWIRE_OPTIMIZE_SIZE != 1
 #error "ROBOWIRE_OPTIMIZE_SIZE must be 0 or 1"
 #endif
 // Keeps a helper shared by several codecs out of line under ROBOWIRE_OPTIMIZE_SIZE.
@@ -56,7 +58,9 @@
 #define ROBOWIRE_ARRAY_LOOPS 0
 #endif
 #endif
-#if ROBOWIRE_ARRAY_LOOPS != 0 && ROBOWIRE_ARRAY_LOOPS != 1 && ROBOWIRE_ARRAY_LOOPS != 2
+#if (ROBOWIRE_ARRAY_LOOPS + 0) == 0 && (0 - ROBOWIRE_ARRAY_LOOPS - 1) == 1  // defined as nothing
+#error "ROBOWIRE_ARRAY_LOOPS is defined empty: define it to 0, 1 or 2"
+#elif ROBOWIRE_ARRAY_LOOPS != 0 && ROBOWIRE_ARRAY_LOOPS != 1 && ROBOWIRE_ARRAY_LOOPS != 2
 #error "ROBOWIRE_ARRAY_LOOPS must be 0, 1 or 2"
 #endif
 // A loop the compiler keeps rolled (ROBOWIRE_ARRAY_LOOPS).
