@@ -69,7 +69,9 @@ public:
     // calls detail::set_written_size (nothing is cleared first).
     constexpr explicit bytes(detail::unset_t) noexcept {}
     // Precondition: init.size() <= N (excess is dropped).
-    constexpr bytes(std::initializer_list<std::uint8_t> init) noexcept : bytes() { append(std::span(init.begin(), init.size())); }
+    constexpr bytes(std::initializer_list<std::uint8_t> init) noexcept : bytes() {
+        append(std::span(init.begin(), init.size()));
+    }
 
     // A buffer of `n` zero bytes (n clamped to N).
     static constexpr bytes zeros(std::size_t n) noexcept {

@@ -125,9 +125,6 @@ ROBOWIRE_SIZE_NOINLINE constexpr void write_frame(bytes<frame_size>& b, std::uin
 }
 }  // namespace impl
 
-// Decodes one 10-byte frame into whichever message its DEV and CMD name.
-// Errors: too_short / too_long, bad_header, bad_trailer, unknown_message
-// (offset 2), and the message's own field errors.
 namespace impl {
 // decode's work, out of line: the input as pointer and size (a span that an
 // inlined caller passes on by value is copied through the stack first).
@@ -145,6 +142,9 @@ constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) no
     return d;
 }
 }  // namespace impl
+// Decodes one 10-byte frame into whichever message its DEV and CMD name.
+// Errors: too_short / too_long, bad_header, bad_trailer, unknown_message
+// (offset 2), and the message's own field errors.
 template <class Message>
 [[nodiscard]] ROBOWIRE_ALWAYS_INLINE constexpr decode_result decode(std::span<const std::uint8_t> in) noexcept {
     static_assert(impl::keys_distinct<Message>(),
@@ -188,7 +188,7 @@ template <class Handler>
         return r;
     }
     const auto reply = [&r](const auto& answer) {  // encoded straight into r
-        auto& out = robowire::detail::built_value(r).emplace(robowire::detail::unset_t{});  // write_frame sets it
+        auto& out = robowire::detail::built_value(r).emplace(robowire::detail::unset_t{});  // write_frame fills it
         impl::write_frame(out, impl::key_of<std::remove_cvref_t<decltype(answer)>>());
         if (const error e = impl::encode_fields(answer, std::span<std::uint8_t, frame_size>(out.data(), frame_size))) r = e;
     };
