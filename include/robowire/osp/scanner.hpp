@@ -59,7 +59,7 @@ public:
             if (n - i < frame_size) {  // a short tail from a start byte: kept whole as the partial candidate
                 len_ = n - i;
                 robowire::detail::copy_small(buf_.data(), p + i, len_);
-                if ((len_ > 1 && buf_[1] != start2) || (len_ > 8 && buf_[8] != end1)) resync();
+                if (!partial_ok()) resync();
                 break;
             }
             if (p[i + 1] == start2 && p[i + 8] == end1 && p[i + 9] == end2) {  // a whole frame in the chunk
@@ -125,9 +125,13 @@ private:
         while (from < n && p[from] != start1) ++from;
         return from;
     }
+    // Can the partial candidate (shorter than a frame, starting with ST1)
+    // still become a frame: its ST2 and EN1, where it has them.
+    constexpr bool partial_ok() const noexcept {
+        return (len_ < 2 || buf_[1] == start2) && (len_ < 9 || buf_[8] == end1);
+    }
     // The candidate failed: drop its first byte and resume at the next start
-    // byte, until what is left can still become a frame (a candidate is
-    // shorter than a frame here, so only its ST2 and EN1 need a look).
+    // byte, until what is left can still become a frame.
     constexpr void resync() noexcept {
         for (;;) {
             ++false_starts_;
@@ -136,7 +140,7 @@ private:
             skipped_ += from;  // the dropped bytes
             for (std::size_t k = from; k < len_; ++k) buf_[k - from] = buf_[k];
             len_ -= from;
-            if ((len_ < 2 || buf_[1] == start2) && (len_ < 9 || buf_[8] == end1)) return;
+            if (partial_ok()) return;
         }
     }
 
