@@ -17,9 +17,9 @@ constexpr std::array<std::uint8_t, 68> status68{
     0xFF, 0xFF, 0x7F, 0x9A, 0x99, 0x19, 0x3F, 0x00, 0x00, 0x20, 0xC0, 0x00, 0x00, 0x4C, 0x41, 0xF9, 0x2A};
 
 // `variants` different status reports (accelerometer and positions vary).
-std::vector<std::array<std::uint8_t, 68>> status_inputs() {
+bench::vector<std::array<std::uint8_t, 68>> status_inputs() {
     bench::rng r;
-    std::vector<std::array<std::uint8_t, 68>> v(bench::variants, status68);
+    bench::vector<std::array<std::uint8_t, 68>> v(bench::variants, status68);
     for (auto& s : v)
         for (std::size_t i : {10u, 11u, 12u, 13u, 26u, 27u, 34u, 35u, 54u, 55u}) s[i] = r.byte();
     return v;
@@ -77,59 +77,59 @@ bool hw_decode_status(const std::uint8_t* p, std::size_t n, hw_status& s) {
 template <std::size_t N>
 void status_decode_robowire(benchmark::State& state) {
     const auto in = status_inputs();
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         for (const auto& item : in) {
             auto r = robowire::decode<bw::status>(std::span(item).first(N));
             benchmark::DoNotOptimize(r);
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(in.size()));
+    bench::messages(state, in.size());
 }
 template <std::size_t N>
 void status_decode_into(benchmark::State& state) {
     const auto in = status_inputs();
     bw::status s{};
     bench::in_memory(s);
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         for (const auto& item : in) {
             auto e = robowire::decode_into(s, std::span(item).first(N));
             benchmark::DoNotOptimize(e);
             benchmark::ClobberMemory();  // the escaped output is written
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(in.size()));
+    bench::messages(state, in.size());
 }
 template <std::size_t N>
 void status_decode_handwritten(benchmark::State& state) {
     const auto in = status_inputs();
     hw_status s{};
     bench::in_memory(s);
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         for (const auto& item : in) {
             bool ok = hw_decode_status(item.data(), N, s);
             benchmark::DoNotOptimize(ok);
             benchmark::ClobberMemory();  // the escaped output is written
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(in.size()));
+    bench::messages(state, in.size());
 }
 template <std::size_t N>
 void status_decode_memcpy(benchmark::State& state) {
     const auto in = status_inputs();
     std::array<std::uint8_t, 68> out{};
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         for (const auto& item : in) {
             std::memcpy(out.data(), item.data(), N);
             benchmark::DoNotOptimize(out);
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(in.size()));
+    bench::messages(state, in.size());
 }
 
 // ---- encoders: 0x30, 0x31, 0x53
-std::vector<bw::set_motor_data> motor_inputs() {
+bench::vector<bw::set_motor_data> motor_inputs() {
     bench::rng r;
-    std::vector<bw::set_motor_data> v(bench::variants);
+    bench::vector<bw::set_motor_data> v(bench::variants);
     for (auto& m : v) {
         for (auto& p : m.power) p = static_cast<std::int8_t>(static_cast<int>(r.next() % 255) - 127);
         m.brake_flags = r.byte() & 0x3F;
@@ -137,9 +137,9 @@ std::vector<bw::set_motor_data> motor_inputs() {
     }
     return v;
 }
-std::vector<bw::set_motor_data_extended> motor_ext_inputs() {
+bench::vector<bw::set_motor_data_extended> motor_ext_inputs() {
     bench::rng r;
-    std::vector<bw::set_motor_data_extended> v(bench::variants);
+    bench::vector<bw::set_motor_data_extended> v(bench::variants);
     for (auto& m : v) {
         for (auto& x : m.reference) x = static_cast<std::int32_t>(r.next());
         for (auto& p : m.power) p = static_cast<std::int8_t>(static_cast<int>(r.next() % 255) - 127);
@@ -148,9 +148,9 @@ std::vector<bw::set_motor_data_extended> motor_ext_inputs() {
     }
     return v;
 }
-std::vector<bw::set_pid_parameters> pid_inputs() {
+bench::vector<bw::set_pid_parameters> pid_inputs() {
     bench::rng r;
-    std::vector<bw::set_pid_parameters> v(bench::variants);
+    bench::vector<bw::set_pid_parameters> v(bench::variants);
     for (auto& m : v) {
         m = (r.next() & 1) ? bw::position_servo_preset(r.byte() & 3) : bw::speed_servo_preset(r.byte() & 3);
         m.kp = static_cast<float>(r.next() % 1000) / 1000.0f;
@@ -199,39 +199,39 @@ bool hw_encode_pid(const bw::set_pid_parameters& m, std::uint8_t* out) {
 template <class M, class Make>
 void encode_robowire(benchmark::State& state, Make make) {
     const auto in = make();
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         for (const auto& item : in) {
             alignas(64) auto r = robowire::encode(item);  // aligned like the baselines' buffers
             benchmark::DoNotOptimize(r);
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(in.size()));
+    bench::messages(state, in.size());
 }
 template <class M, class Make>
 void encode_to_robowire(benchmark::State& state, Make make) {
     const auto in = make();
     alignas(64) std::array<std::uint8_t, 64> out{};
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         for (const auto& item : in) {
             const auto n = robowire::encode_to(item, out);
             bench::consume(n);
             benchmark::DoNotOptimize(out);
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(in.size()));
+    bench::messages(state, in.size());
 }
 template <class M, class Make, class Enc>
 void encode_handwritten(benchmark::State& state, Make make, Enc enc) {
     const auto in = make();
     alignas(64) std::array<std::uint8_t, 64> out{};
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         for (const auto& item : in) {
             bool ok = enc(item, out.data());
             benchmark::DoNotOptimize(ok);
             benchmark::DoNotOptimize(out);
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(in.size()));
+    bench::messages(state, in.size());
 }
 
 void encode30_robowire(benchmark::State& s) { encode_robowire<bw::set_motor_data>(s, motor_inputs); }
@@ -247,12 +247,16 @@ void encode53_robowire(benchmark::State& s) { encode_robowire<bw::set_pid_parame
 void encode53_handwritten(benchmark::State& s) { encode_handwritten<bw::set_pid_parameters>(s, pid_inputs, hw_encode_pid); }
 
 // ---- decode_command over every command
-const std::vector<std::vector<std::uint8_t>>& command_batch() {
-    static const std::vector<std::vector<std::uint8_t>> batch = [] {
-        std::vector<std::vector<std::uint8_t>> v;
+// One command per 64-byte slot of one page-aligned block.
+const bench::vector<std::span<const std::uint8_t>>& command_batch() {
+    static bench::vector<std::array<std::uint8_t, 64>> slots(20);
+    static const bench::vector<std::span<const std::uint8_t>> batch = [] {
+        bench::vector<std::span<const std::uint8_t>> v;
         auto add = [&](const auto& m) {
             const auto b = robowire::encode(m).value();
-            v.emplace_back(b.begin(), b.end());
+            auto& slot = slots.at(v.size());
+            std::copy(b.begin(), b.end(), slot.begin());
+            v.emplace_back(slot.data(), b.size());
         };
         add(bw::set_device_name{"MyBrick"});
         add(bw::set_motion_wakeup{true, 300, 3600});
@@ -369,62 +373,62 @@ bool hw_decode_command(const std::uint8_t* p, std::size_t n, hw_command& c) {
 
 void commands_robowire(benchmark::State& state) {
     const auto& batch = command_batch();
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         for (const auto& item : batch) {
             auto r = bw::decode_command(item);
             benchmark::DoNotOptimize(r);
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(batch.size()));
+    bench::messages(state, batch.size());
 }
 void commands_handwritten(benchmark::State& state) {
     const auto& batch = command_batch();
     hw_command c{};
     bench::in_memory(c);
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         for (const auto& item : batch) {
             bool ok = hw_decode_command(item.data(), item.size(), c);
             benchmark::DoNotOptimize(ok);
             benchmark::ClobberMemory();  // the escaped output is written
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(batch.size()));
+    bench::messages(state, batch.size());
 }
 void commands_memcpy(benchmark::State& state) {
     const auto& batch = command_batch();
     alignas(64) std::array<std::uint8_t, 64> out{};
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         for (const auto& item : batch) {
             std::memcpy(out.data(), item.data(), item.size());
             benchmark::DoNotOptimize(out);
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(batch.size()));
+    bench::messages(state, batch.size());
 }
 }  // namespace
 
-BENCHMARK(status_decode_robowire<68>)->Name("buwizz3.status68_decode:robowire");
-BENCHMARK(status_decode_into<68>)->Name("buwizz3.status68_decode_into:robowire");
-BENCHMARK(status_decode_handwritten<68>)->Name("buwizz3.status68_decode_into:handwritten");
-BENCHMARK(status_decode_handwritten<68>)->Name("buwizz3.status68_decode:handwritten");
-BENCHMARK(status_decode_memcpy<68>)->Name("buwizz3.status68_decode:memcpy");
-BENCHMARK(status_decode_robowire<54>)->Name("buwizz3.status54_decode:robowire");
-BENCHMARK(status_decode_into<54>)->Name("buwizz3.status54_decode_into:robowire");
-BENCHMARK(status_decode_handwritten<54>)->Name("buwizz3.status54_decode_into:handwritten");
-BENCHMARK(status_decode_handwritten<54>)->Name("buwizz3.status54_decode:handwritten");
-BENCHMARK(status_decode_memcpy<54>)->Name("buwizz3.status54_decode:memcpy");
-BENCHMARK(encode30_robowire)->Name("buwizz3.encode_0x30:robowire");
-BENCHMARK(encode30_handwritten)->Name("buwizz3.encode_0x30:handwritten");
-BENCHMARK(encode30_to)->Name("buwizz3.encode_to_0x30:robowire");
-BENCHMARK(encode30_handwritten)->Name("buwizz3.encode_to_0x30:handwritten");
-BENCHMARK(encode31_robowire)->Name("buwizz3.encode_0x31:robowire");
-BENCHMARK(encode31_handwritten)->Name("buwizz3.encode_0x31:handwritten");
-BENCHMARK(encode31_to)->Name("buwizz3.encode_to_0x31:robowire");
-BENCHMARK(encode31_handwritten)->Name("buwizz3.encode_to_0x31:handwritten");
-BENCHMARK(encode53_robowire)->Name("buwizz3.encode_0x53:robowire");
-BENCHMARK(encode53_handwritten)->Name("buwizz3.encode_0x53:handwritten");
-BENCHMARK(encode53_to)->Name("buwizz3.encode_to_0x53:robowire");
-BENCHMARK(encode53_handwritten)->Name("buwizz3.encode_to_0x53:handwritten");
-BENCHMARK(commands_robowire)->Name("buwizz3.decode_command_mixed:robowire");
-BENCHMARK(commands_handwritten)->Name("buwizz3.decode_command_mixed:handwritten");
-BENCHMARK(commands_memcpy)->Name("buwizz3.decode_command_mixed:memcpy");
+BENCHMARK(status_decode_robowire<68>)->Name("buwizz3.status68_decode:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_into<68>)->Name("buwizz3.status68_decode_into:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_handwritten<68>)->Name("buwizz3.status68_decode_into:handwritten")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_handwritten<68>)->Name("buwizz3.status68_decode:handwritten")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_memcpy<68>)->Name("buwizz3.status68_decode:memcpy")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_robowire<54>)->Name("buwizz3.status54_decode:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_into<54>)->Name("buwizz3.status54_decode_into:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_handwritten<54>)->Name("buwizz3.status54_decode_into:handwritten")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_handwritten<54>)->Name("buwizz3.status54_decode:handwritten")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_memcpy<54>)->Name("buwizz3.status54_decode:memcpy")->Apply(bench::rounds<1>);
+BENCHMARK(encode30_robowire)->Name("buwizz3.encode_0x30:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(encode30_handwritten)->Name("buwizz3.encode_0x30:handwritten")->Apply(bench::rounds<1>);
+BENCHMARK(encode30_to)->Name("buwizz3.encode_to_0x30:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(encode30_handwritten)->Name("buwizz3.encode_to_0x30:handwritten")->Apply(bench::rounds<1>);
+BENCHMARK(encode31_robowire)->Name("buwizz3.encode_0x31:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(encode31_handwritten)->Name("buwizz3.encode_0x31:handwritten")->Apply(bench::rounds<1>);
+BENCHMARK(encode31_to)->Name("buwizz3.encode_to_0x31:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(encode31_handwritten)->Name("buwizz3.encode_to_0x31:handwritten")->Apply(bench::rounds<1>);
+BENCHMARK(encode53_robowire)->Name("buwizz3.encode_0x53:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(encode53_handwritten)->Name("buwizz3.encode_0x53:handwritten")->Apply(bench::rounds<1>);
+BENCHMARK(encode53_to)->Name("buwizz3.encode_to_0x53:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(encode53_handwritten)->Name("buwizz3.encode_to_0x53:handwritten")->Apply(bench::rounds<1>);
+BENCHMARK(commands_robowire)->Name("buwizz3.decode_command_mixed:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(commands_handwritten)->Name("buwizz3.decode_command_mixed:handwritten")->Apply(bench::rounds<1>);
+BENCHMARK(commands_memcpy)->Name("buwizz3.decode_command_mixed:memcpy")->Apply(bench::rounds<1>);

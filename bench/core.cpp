@@ -4,9 +4,9 @@
 #include "common.hpp"
 
 namespace {
-std::vector<std::uint8_t> random_bytes(std::size_t n) {
+bench::vector<std::uint8_t> random_bytes(std::size_t n) {
     bench::rng r;
-    std::vector<std::uint8_t> v(n);
+    bench::vector<std::uint8_t> v(n);
     for (auto& b : v) b = r.byte();
     return v;
 }
@@ -15,7 +15,7 @@ void load_u32_robowire(benchmark::State& state) {
     const auto buf = random_bytes(4096 + 4);
     std::size_t i = 0;
     std::uint32_t sum = 0;
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         sum += robowire::load_le<std::uint32_t>(buf.data() + (i++ & 4095));
         benchmark::DoNotOptimize(sum);
     }
@@ -24,7 +24,7 @@ void load_u32_memcpy(benchmark::State& state) {
     const auto buf = random_bytes(4096 + 4);
     std::size_t i = 0;
     std::uint32_t sum = 0;
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         std::uint32_t v;
         std::memcpy(&v, buf.data() + (i++ & 4095), 4);  // little-endian host
         sum += v;
@@ -35,7 +35,7 @@ void load_f32_robowire(benchmark::State& state) {
     const auto buf = random_bytes(4096 + 4);
     std::size_t i = 0;
     float sum = 0;
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         sum += robowire::load_le<float>(buf.data() + (i++ & 4095));
         benchmark::DoNotOptimize(sum);
     }
@@ -44,7 +44,7 @@ void load_f32_memcpy(benchmark::State& state) {
     const auto buf = random_bytes(4096 + 4);
     std::size_t i = 0;
     float sum = 0;
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         float v;
         std::memcpy(&v, buf.data() + (i++ & 4095), 4);
         sum += v;
@@ -55,7 +55,7 @@ void hex_robowire(benchmark::State& state) {
     const auto buf = random_bytes(68 * bench::variants);
     std::array<char, 3 * 68> out{};
     std::size_t i = 0;
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         const auto n = robowire::to_hex(std::span(buf).subspan(68 * (i++ % bench::variants), 68), out);
         benchmark::DoNotOptimize(n);
         benchmark::ClobberMemory();
@@ -67,7 +67,7 @@ void hex_handwritten(benchmark::State& state) {
     std::array<char, 3 * 68> out{};
     static const char digits[] = "0123456789ABCDEF";
     std::size_t i = 0;
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         const std::uint8_t* p = buf.data() + 68 * (i++ % bench::variants);
         char* o = out.data();
         for (std::size_t k = 0; k < 68; ++k) {
@@ -82,9 +82,9 @@ void hex_handwritten(benchmark::State& state) {
 }
 }  // namespace
 
-BENCHMARK(load_u32_robowire)->Name("core.load_u32:robowire");
-BENCHMARK(load_u32_memcpy)->Name("core.load_u32:memcpy");
-BENCHMARK(load_f32_robowire)->Name("core.load_f32:robowire");
-BENCHMARK(load_f32_memcpy)->Name("core.load_f32:memcpy");
-BENCHMARK(hex_robowire)->Name("core.to_hex_68:robowire");
-BENCHMARK(hex_handwritten)->Name("core.to_hex_68:handwritten");
+BENCHMARK(load_u32_robowire)->Name("core.load_u32:robowire")->Apply(bench::rounds<4096>);
+BENCHMARK(load_u32_memcpy)->Name("core.load_u32:memcpy")->Apply(bench::rounds<4096>);
+BENCHMARK(load_f32_robowire)->Name("core.load_f32:robowire")->Apply(bench::rounds<4096>);
+BENCHMARK(load_f32_memcpy)->Name("core.load_f32:memcpy")->Apply(bench::rounds<4096>);
+BENCHMARK(hex_robowire)->Name("core.to_hex_68:robowire")->Apply(bench::rounds<64>);
+BENCHMARK(hex_handwritten)->Name("core.to_hex_68:handwritten")->Apply(bench::rounds<64>);

@@ -9,9 +9,9 @@
 namespace {
 namespace nb = robowire::navbot;
 
-std::vector<nb::maneuver> maneuvers() {
+bench::vector<nb::maneuver> maneuvers() {
     bench::rng r;
-    std::vector<nb::maneuver> v(bench::variants);
+    bench::vector<nb::maneuver> v(bench::variants);
     auto s = [&](int lim) { return static_cast<std::int8_t>(static_cast<int>(r.next() % static_cast<unsigned>(2 * lim + 1)) - lim); };
     for (auto& m : v) {
         m.roll = s(100);
@@ -27,8 +27,8 @@ std::vector<nb::maneuver> maneuvers() {
     }
     return v;
 }
-std::vector<std::array<std::uint8_t, 20>> maneuver_frames() {
-    std::vector<std::array<std::uint8_t, 20>> v;
+bench::vector<std::array<std::uint8_t, 20>> maneuver_frames() {
+    bench::vector<std::array<std::uint8_t, 20>> v;
     for (const auto& m : maneuvers()) {
         const auto b = robowire::encode(m).value();
         std::array<std::uint8_t, 20> a{};
@@ -71,58 +71,61 @@ bool hw_decode(const std::uint8_t* p, std::size_t n, nb::maneuver& m) {
 
 void encode_robowire(benchmark::State& state) {
     const auto v = maneuvers();
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         for (const auto& item : v) {
             alignas(64) auto r = robowire::encode(item);  // aligned like the baselines' buffers
             benchmark::DoNotOptimize(r);
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(v.size()));
+    bench::messages(state, v.size());
 }
 void encode_handwritten(benchmark::State& state) {
     const auto v = maneuvers();
     alignas(64) std::array<std::uint8_t, 20> out{};
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         for (const auto& item : v) {
             bool ok = hw_encode(item, out.data());
             benchmark::DoNotOptimize(ok);
             benchmark::DoNotOptimize(out);
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(v.size()));
+    bench::messages(state, v.size());
 }
 void decode_robowire(benchmark::State& state) {
     const auto v = maneuver_frames();
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         for (const auto& item : v) {
             auto r = robowire::decode<nb::maneuver>(item);
             benchmark::DoNotOptimize(r);
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(v.size()));
+    bench::messages(state, v.size());
 }
 void decode_handwritten(benchmark::State& state) {
     const auto v = maneuver_frames();
     nb::maneuver m{};
     bench::in_memory(m);
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         for (const auto& item : v) {
             bool ok = hw_decode(item.data(), 20, m);
             benchmark::DoNotOptimize(ok);
             benchmark::ClobberMemory();  // the escaped output is written
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(v.size()));
+    bench::messages(state, v.size());
 }
 
 // 200-byte JSON payloads (14 frames), a few different ones.
-std::vector<std::string> json_payloads() {
-    std::vector<std::string> v;
-    for (int k = 0; k < 8; ++k) {
+// Each in a 256-byte slot of one page-aligned block.
+bench::vector<std::string_view> json_payloads() {
+    static bench::vector<std::array<char, 256>> slots(8);
+    bench::vector<std::string_view> v;
+    for (std::size_t k = 0; k < slots.size(); ++k) {
         std::string s = R"({"type":"set_config","id":)" + std::to_string(k) + R"(,"data":")";
-        while (s.size() < 198) s += static_cast<char>('a' + (s.size() + static_cast<std::size_t>(k)) % 26);
+        while (s.size() < 198) s += static_cast<char>('a' + (s.size() + k) % 26);
         s += "\"}";
-        v.push_back(s);
+        std::copy(s.begin(), s.end(), slots[k].begin());
+        v.emplace_back(slots[k].data(), s.size());
     }
     return v;
 }
@@ -130,7 +133,7 @@ void json_robowire(benchmark::State& state) {
     const auto v = json_payloads();
     nb::reassembler<210> r;
     std::size_t i = 0;
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         const auto frames = nb::json_frames(v[i++ % v.size()]).value();
         for (const auto& f : frames) {
             auto st = r.push(f);
@@ -144,8 +147,8 @@ void json_handwritten(benchmark::State& state) {
     const auto v = json_payloads();
     std::array<std::uint8_t, 210> buf{};
     std::size_t i = 0;
-    for (auto _ : state) {
-        const std::string& s = v[i++ % v.size()];
+    for (auto _ : bench::measure(state)) {
+        const std::string_view s = v[i++ % v.size()];
         const std::size_t frames = (s.size() + 14) / 15;
         std::size_t have = 0;
         int expect = -1;
@@ -171,9 +174,9 @@ void json_handwritten(benchmark::State& state) {
 }
 }  // namespace
 
-BENCHMARK(encode_robowire)->Name("navbot.maneuver_encode:robowire");
-BENCHMARK(encode_handwritten)->Name("navbot.maneuver_encode:handwritten");
-BENCHMARK(decode_robowire)->Name("navbot.maneuver_decode:robowire");
-BENCHMARK(decode_handwritten)->Name("navbot.maneuver_decode:handwritten");
-BENCHMARK(json_robowire)->Name("navbot.json200_fragment_reassemble:robowire");
-BENCHMARK(json_handwritten)->Name("navbot.json200_fragment_reassemble:handwritten");
+BENCHMARK(encode_robowire)->Name("navbot.maneuver_encode:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(encode_handwritten)->Name("navbot.maneuver_encode:handwritten")->Apply(bench::rounds<1>);
+BENCHMARK(decode_robowire)->Name("navbot.maneuver_decode:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(decode_handwritten)->Name("navbot.maneuver_decode:handwritten")->Apply(bench::rounds<1>);
+BENCHMARK(json_robowire)->Name("navbot.json200_fragment_reassemble:robowire")->Apply(bench::rounds<8>);
+BENCHMARK(json_handwritten)->Name("navbot.json200_fragment_reassemble:handwritten")->Apply(bench::rounds<8>);

@@ -10,9 +10,9 @@ namespace {
 namespace osp = robowire::osp;
 using frame10 = std::array<std::uint8_t, 10>;
 
-std::vector<frame10> frames() {
+bench::vector<frame10> frames() {
     bench::rng r;
-    std::vector<frame10> v;
+    bench::vector<frame10> v;
     const std::uint8_t keys[][2] = {{0, 0x11}, {1, 0x02}, {2, 0x11}, {2, 0x12}, {2, 0x13}, {2, 0x14}};
     for (std::size_t i = 0; i < bench::variants; ++i) {
         const auto& k = keys[i % 6];
@@ -23,9 +23,9 @@ std::vector<frame10> frames() {
     }
     return v;
 }
-std::vector<frame10> voltage_frames() {
+bench::vector<frame10> voltage_frames() {
     bench::rng r;
-    std::vector<frame10> v;
+    bench::vector<frame10> v;
     for (std::size_t i = 0; i < bench::variants; ++i) v.push_back({0xFF, 0xAA, 2, 0x12, r.byte(), r.byte(), 0, 0, 0x55, 0x77});
     return v;
 }
@@ -52,57 +52,57 @@ bool hw_decode_any(const std::uint8_t* p, std::size_t n, hw_msg& m) {
 
 void voltage_robowire(benchmark::State& state) {
     const auto v = voltage_frames();
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         for (const auto& item : v) {
             const auto r = robowire::decode<osp::obp1::voltage>(item);
             bench::consume(r);
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(v.size()));
+    bench::messages(state, v.size());
 }
 void voltage_handwritten(benchmark::State& state) {
     const auto v = voltage_frames();
     std::int16_t cv = 0;
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         for (const auto& item : v) {
             bool ok = hw_voltage(item.data(), 10, cv);
             benchmark::DoNotOptimize(ok);
             benchmark::DoNotOptimize(cv);
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(v.size()));
+    bench::messages(state, v.size());
 }
 void dispatch_robowire(benchmark::State& state) {
     const auto v = frames();
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         for (const auto& item : v) {
             auto r = osp::decode(item);
             benchmark::DoNotOptimize(r);
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(v.size()));
+    bench::messages(state, v.size());
 }
 void dispatch_handwritten(benchmark::State& state) {
     const auto v = frames();
     hw_msg m{};
     bench::in_memory(m);
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         for (const auto& item : v) {
             bool ok = hw_decode_any(item.data(), 10, m);
             benchmark::DoNotOptimize(ok);
             benchmark::ClobberMemory();  // the escaped output is written
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(v.size()));
+    bench::messages(state, v.size());
 }
 
 // ---- streams (64 KiB)
 constexpr std::size_t stream_size = 64 * 1024;
 enum class kind { clean, noisy, noise };
-std::vector<std::uint8_t> stream(kind k) {
+bench::vector<std::uint8_t> stream(kind k) {
     bench::rng r;
     const auto fs = frames();
-    std::vector<std::uint8_t> s;
+    bench::vector<std::uint8_t> s;
     s.reserve(stream_size + 16);
     std::size_t i = 0;
     while (s.size() < stream_size) {
@@ -121,16 +121,17 @@ std::vector<std::uint8_t> stream(kind k) {
 void scan_robowire(benchmark::State& state, kind k) {
     const auto s = stream(k);
     const auto chunk = static_cast<std::size_t>(state.range(0));
-    std::uint64_t found = 0;
-    for (auto _ : state) {
+    std::uint64_t found = 0, frames_seen = 0;
+    for (auto _ : bench::measure(state)) {
         osp::scanner sc;
         for (std::size_t i = 0; i < s.size(); i += chunk)
             sc.feed(std::span(s).subspan(i, std::min(chunk, s.size() - i)), [&](osp::scanner::frame_bytes f) {
                 found += f[3];
             });
         benchmark::DoNotOptimize(found);
-        state.counters["frames"] = static_cast<double>(sc.frames());
+        frames_seen = sc.frames();
     }
+    state.counters["frames"] = static_cast<double>(frames_seen);
     state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(s.size()));
 }
 
@@ -160,7 +161,7 @@ void scan_state_machine(benchmark::State& state, kind k) {
     const auto s = stream(k);
     const auto chunk = static_cast<std::size_t>(state.range(0));
     std::uint64_t found = 0, frames_seen = 0;
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         state_machine sm;
         frames_seen = 0;
         for (std::size_t i = 0; i < s.size(); i += chunk) {
@@ -175,7 +176,7 @@ void scan_state_machine(benchmark::State& state, kind k) {
 void scan_memchr(benchmark::State& state, kind k) {
     const auto s = stream(k);
     const auto chunk = static_cast<std::size_t>(state.range(0));
-    for (auto _ : state) {
+    for (auto _ : bench::measure(state)) {
         std::size_t starts = 0;
         for (std::size_t i = 0; i < s.size(); i += chunk) {
             const std::uint8_t* p = s.data() + i;
@@ -191,14 +192,14 @@ void scan_memchr(benchmark::State& state, kind k) {
 }
 }  // namespace
 
-BENCHMARK(voltage_robowire)->Name("osp.decode_voltage:robowire");
-BENCHMARK(voltage_handwritten)->Name("osp.decode_voltage:handwritten");
-BENCHMARK(dispatch_robowire)->Name("osp.decode_dispatch:robowire");
-BENCHMARK(dispatch_handwritten)->Name("osp.decode_dispatch:handwritten");
+BENCHMARK(voltage_robowire)->Name("osp.decode_voltage:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(voltage_handwritten)->Name("osp.decode_voltage:handwritten")->Apply(bench::rounds<1>);
+BENCHMARK(dispatch_robowire)->Name("osp.decode_dispatch:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(dispatch_handwritten)->Name("osp.decode_dispatch:handwritten")->Apply(bench::rounds<1>);
 #define ROBOWIRE_SCAN(K)                                                                                    \
-    BENCHMARK_CAPTURE(scan_robowire, K, kind::K)->Name("osp.scan_" #K ":robowire")->Arg(1)->Arg(64)->Arg(4096); \
-    BENCHMARK_CAPTURE(scan_state_machine, K, kind::K)->Name("osp.scan_" #K ":bytewise")->Arg(1)->Arg(64)->Arg(4096); \
-    BENCHMARK_CAPTURE(scan_memchr, K, kind::K)->Name("osp.scan_" #K ":memchr")->Arg(1)->Arg(64)->Arg(4096);
+    BENCHMARK_CAPTURE(scan_robowire, K, kind::K)->Name("osp.scan_" #K ":robowire")->Arg(1)->Arg(64)->Arg(4096)->Apply(bench::rounds<1>); \
+    BENCHMARK_CAPTURE(scan_state_machine, K, kind::K)->Name("osp.scan_" #K ":bytewise")->Arg(1)->Arg(64)->Arg(4096)->Apply(bench::rounds<1>); \
+    BENCHMARK_CAPTURE(scan_memchr, K, kind::K)->Name("osp.scan_" #K ":memchr")->Arg(1)->Arg(64)->Arg(4096)->Apply(bench::rounds<1>);
 ROBOWIRE_SCAN(clean)
 ROBOWIRE_SCAN(noisy)
 ROBOWIRE_SCAN(noise)
