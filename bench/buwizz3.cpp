@@ -284,22 +284,28 @@ const bench::vector<std::span<const std::uint8_t>>& command_batch() {
 }
 
 // A careful user's dispatcher: tagged union, same checks.
+struct hw_wakeup { bool enabled; std::uint32_t idle, sleep; };
+struct hw_motor { std::int8_t power[6]; std::uint8_t brake, lut; };
+struct hw_motor_ext { std::int32_t ref[4]; std::int8_t power[2]; std::uint8_t brake, lut; };
+struct hw_led { std::uint8_t n; std::uint8_t bytes[16]; };
+struct hw_uart { std::uint8_t channel; std::uint32_t baud; };
+struct hw_pid { std::uint8_t port; float f[8]; std::int8_t lim_out, db, boost; std::uint8_t mode; };
 struct hw_command {
     std::uint8_t kind;
     union {
         char name[13];
-        struct { bool enabled; std::uint32_t idle, sleep; } wakeup;
+        hw_wakeup wakeup;
         float factors[6];
-        struct { std::int8_t power[6]; std::uint8_t brake, lut; } motor;
-        struct { std::int32_t ref[4]; std::int8_t power[2]; std::uint8_t brake, lut; } motor_ext;
+        hw_motor motor;
+        hw_motor_ext motor_ext;
         std::uint8_t one;
         std::uint8_t ramps[12];
-        struct { std::uint8_t n; std::uint8_t bytes[16]; } led;
+        hw_led led;
         std::uint8_t limits[6];
-        struct { std::uint8_t channel; std::uint32_t baud; } uart;
+        hw_uart uart;
         std::uint8_t functions[4];
         std::int32_t reference[4];
-        struct { std::uint8_t port; float f[8]; std::int8_t lim_out, db, boost; std::uint8_t mode; } pid;
+        hw_pid pid;
     };
 };
 inline bool valid_function(std::uint8_t f) { return f == 0 || f == 0x10 || (f >= 0x14 && f <= 0x16); }

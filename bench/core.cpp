@@ -54,6 +54,7 @@ void load_f32_memcpy(benchmark::State& state) {
 void hex_robowire(benchmark::State& state) {
     const auto buf = random_bytes(68 * bench::variants);
     std::array<char, 3 * 68> out{};
+    bench::in_memory(out);
     std::size_t i = 0;
     for (auto _ : bench::measure(state)) {
         const auto n = robowire::to_hex(std::span(buf).subspan(68 * (i++ % bench::variants), 68), out);
@@ -65,6 +66,7 @@ void hex_robowire(benchmark::State& state) {
 void hex_handwritten(benchmark::State& state) {
     const auto buf = random_bytes(68 * bench::variants);
     std::array<char, 3 * 68> out{};
+    bench::in_memory(out);
     static const char digits[] = "0123456789ABCDEF";
     std::size_t i = 0;
     for (auto _ : bench::measure(state)) {

@@ -1,0 +1,89 @@
+#!/usr/bin/env python3
+"""Shows that bench/check fails on planted regressions and passes on the
+committed baseline. Usage: bench/test_check.py INSTRUCTIONS_JSON BASELINE_JSON
+(the figures of this build, from bench/run --instructions, and the baseline
+they are gated against)."""
+import copy
+import json
+import pathlib
+import subprocess
+import sys
+import tempfile
+
+check = pathlib.Path(__file__).resolve().parent / "check"
+current, committed = sys.argv[1], sys.argv[2]
+base = json.loads(pathlib.Path(committed).read_text())
+failed = []
+
+
+def gate(baseline, *extra):
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+        json.dump(baseline, f)
+    p = subprocess.run([sys.executable, str(check), "--current", current, "--baseline", f.name, *extra],
+                       capture_output=True, text=True)
+    pathlib.Path(f.name).unlink()
+    return p.returncode, p.stdout
+
+
+def expect(what, ok):
+    print(f"{'ok  ' if ok else 'FAIL'} {what}")
+    if not ok:
+        failed.append(what)
+
+
+def cheaper(baseline, factor, which=("robowire",)):
+    b = copy.deepcopy(baseline)
+    for variants in b["cases"].values():
+        for v in which:
+            if v in variants:
+                variants[v]["instructions"] *= factor
+    return b
+
+
+robowire_cases = [c for c, v in base["cases"].items() if "robowire" in v]
+rated = [c for c in robowire_cases if {"handwritten", "bytewise"} & set(base["cases"][c])]
+
+code, out = gate(base)
+expect("the committed baseline passes", code == 0)
+
+code, out = gate(cheaper(base, 1 / 1.05))
+named = [c for c in robowire_cases if f"FAIL {c}:" in out]
+expect(f"a baseline 5 % cheaper fails, naming every case ({len(named)}/{len(robowire_cases)})",
+       code == 1 and len(named) == len(robowire_cases))
+
+code, out = gate(cheaper(base, 1 / 1.005))
+expect("a baseline 0.5 % cheaper passes at the default 1 % threshold", code == 0)
+code, out = gate(cheaper(base, 1 / 1.005), "--threshold", "0.25")
+expect("... and fails at --threshold 0.25", code == 1)
+
+other = cheaper(base, 1 / 1.05)
+other["toolchain"] = "another compiler"
+code, out = gate(other)
+named = [c for c in rated if f"FAIL {c}:" in out]
+expect(f"another toolchain: gated on ratios, every rated case named ({len(named)}/{len(rated)})",
+       code == 1 and "toolchain differs" in out and len(named) == len(rated))
+
+same_ratio = cheaper(base, 1 / 1.05, ("robowire", "handwritten", "bytewise"))
+same_ratio["toolchain"] = "another compiler"
+code, out = gate(same_ratio)
+expect("another toolchain, every variant 5 % cheaper (same ratios): passes", code == 0)
+
+libc = copy.deepcopy(base)
+touched = 0
+for variants in libc["cases"].values():
+    for e in variants.values():
+        if e.get("libc_functions"):
+            e["libc_functions"] = ["__memchr_other"]
+            e["instructions"] += 1000.0  # a different implementation, other counts
+            e["libc_instructions"] += 1000.0
+            touched += 1
+code, out = gate(libc)
+expect(f"other libc implementations ({touched} variants): compared without libc, passes",
+       touched > 0 and code == 0 and "libc differs" in out)
+
+missing = copy.deepcopy(base)
+missing["cases"]["core.removed_case"] = {"robowire": {"instructions": 1.0, "estimated_cycles": 1.0}}
+code, out = gate(missing)
+expect("a case in the baseline that was not measured fails", code == 1 and "core.removed_case" in out)
+
+sys.exit(1 if failed else 0)
