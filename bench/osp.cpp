@@ -35,11 +35,14 @@ bool hw_voltage(const std::uint8_t* p, std::size_t n, std::int16_t& cv) {
     cv = static_cast<std::int16_t>(p[4] | p[5] << 8);
     return true;
 }
-struct hw_msg { std::uint8_t dev, cmd; std::uint16_t a; std::uint8_t b; };
+// The message, and the frame's DEV, CMD and P1..P4 as osp::decode keeps
+// them (its frame(), also for unknown messages).
+struct hw_msg { std::uint8_t dev, cmd, p[4]; std::uint16_t a; std::uint8_t b; };
 bool hw_decode_any(const std::uint8_t* p, std::size_t n, hw_msg& m) {
     if (n != 10 || p[0] != 0xFF || p[1] != 0xAA || p[8] != 0x55 || p[9] != 0x77) return false;
     m.dev = p[2];
     m.cmd = p[3];
+    std::memcpy(m.p, p + 4, 4);
     switch (p[2] << 8 | p[3]) {
     case 0x0001: case 0x0201: case 0x0202: case 0x0203: case 0x0204: return true;
     case 0x0011: m.b = p[4]; return p[4] <= 3;

@@ -19,6 +19,13 @@
 #define ROBOWIRE_ALWAYS_INLINE inline
 #endif
 
+// Keeps an error path out of line and out of the hot code.
+#if defined(__GNUC__) || defined(__clang__)
+#define ROBOWIRE_COLD [[gnu::cold, gnu::noinline]]
+#else
+#define ROBOWIRE_COLD
+#endif
+
 // ROBOWIRE_OPTIMIZE_SIZE: 1 takes the smaller of robowire's equivalent code
 // paths, with the same results (OSP scanner byte by byte, records and optional
 // blocks decoded in place, key lists instead of 256-byte dispatch tables, ...;

@@ -22,6 +22,11 @@ template <class M>
 }
 
 namespace detail {
+// too_short (at the input's end) or too_long (at the largest size); out of
+// line, so that the good path sets up no error.
+ROBOWIRE_COLD constexpr error length_error(std::size_t size, std::size_t min, std::size_t max) noexcept {
+    return size < min ? fail_at(errc::too_short, size) : fail_at(errc::too_long, max);
+}
 // The fields of M, from an input whose fixed bytes and length are checked.
 template <class M>
 ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, std::span<const std::uint8_t> in) noexcept {
@@ -39,8 +44,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const st
     constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input();
     if (const error e = check_fixed<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{}); e.code != errc::ok)
         return e;
-    if (in.size() < min) return fail_at(errc::too_short, in.size());
-    if (in.size() > max) return fail_at(errc::too_long, max);
+    if (in.size() < min || in.size() > max) [[unlikely]]
+        return length_error(in.size(), min, max);
     return decode_body(out, in);
 }
 // decode_into's work, out of line: the input as pointer and size (a span that an

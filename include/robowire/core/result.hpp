@@ -206,6 +206,9 @@ namespace detail {
 // no access check (at -Os the check is a call that is not folded away).
 template <class T>
 constexpr T& built_value(result<T>& r) noexcept;
+// Makes r hold T(arg), whatever it held, and returns the value.
+template <class T, class A>
+constexpr T& build_value(result<T>& r, const A& arg) noexcept;
 // The error of a result the caller has just seen holding one: no access check.
 template <class T>
 constexpr error held_error(const result<T>& r) noexcept;
@@ -267,6 +270,8 @@ public:
 private:
     template <class U>
     friend constexpr U& detail::built_value(result<U>& r) noexcept;
+    template <class U, class A>
+    friend constexpr U& detail::build_value(result<U>& r, const A& arg) noexcept;
     template <class U>
     friend constexpr robowire::error detail::held_error(const result<U>& r) noexcept;
     constexpr void check(bool want_value) const noexcept(detail::access_noexcept) {
@@ -304,6 +309,16 @@ private:
 
 template <class T>
 constexpr T& detail::built_value(result<T>& r) noexcept { return r.value_.v; }
+template <class T, class A>
+constexpr T& detail::build_value(result<T>& r, const A& arg) noexcept {
+    if (std::is_constant_evaluated()) {
+        r = result<T>(std::in_place, arg);  // a whole-object copy switches the active member
+    } else {
+        ::new (static_cast<void*>(&r.value_)) typename result<T>::holder(std::in_place, arg);
+        r.ok_ = true;
+    }
+    return r.value_.v;
+}
 template <class T>
 constexpr error detail::held_error(const result<T>& r) noexcept { return r.error_; }
 

@@ -3,6 +3,7 @@
 // virtual calls.
 #pragma once
 
+#include <cstring>
 #include <optional>
 #include <span>
 #include <type_traits>
@@ -41,6 +42,8 @@ private:
     std::optional<osp::frame> frame_;
 };
 
+static_assert(sizeof(frame) == 6 && std::is_trivially_copyable_v<frame>, "osp::frame: DEV, CMD, P1..P4, no padding");
+
 namespace impl {
 // DEV << 8 | CMD of message M (its fixed bytes 2 and 3).
 template <class M>
@@ -76,18 +79,28 @@ constexpr bool plain_frame() noexcept {
 // The four markers: the fixed bytes of osp::frame (a copy of them alone, so
 // that the loop below keeps only 32 bytes of the table in flash).
 inline constexpr auto markers = table_v<osp::frame>.fixed;
+// Which of the checks below a frame failed, in decode_into<frame>'s order
+// (out of line: the good path is one test per byte).
+ROBOWIRE_COLD constexpr error frame_error(std::span<const std::uint8_t> in) noexcept {
+    constexpr auto all = std::make_index_sequence<markers.size()>{};
+    if (const error e = robowire::detail::check_fixed<osp::frame>(in, all)) return e;
+    if (in.size() < frame_size) return robowire::detail::fail_at(errc::too_short, in.size());
+    return fail(errc::too_long, frame_size);
+}
 // Markers and length of any frame: the checks of decode_into<frame>, shared by every message.
 constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
     if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // a loop over the four
         for (const auto& m : markers)
             if (m.offset < in.size() && in[m.offset] != m.value) return robowire::detail::fail_at(m.code, m.offset);
+        if (in.size() < frame_size) return robowire::detail::fail_at(errc::too_short, in.size());
+        if (in.size() > frame_size) return fail(errc::too_long, frame_size);
+        return {};
     } else {  // unrolled: faster on hosts
-        constexpr auto all = std::make_index_sequence<markers.size()>{};
-        if (const error e = robowire::detail::check_fixed<osp::frame>(in, all)) return e;
+        if (in.size() == frame_size && in[0] == start1 && in[1] == start2 && in[frame_size - 2] == end1 &&
+            in[frame_size - 1] == end2) [[likely]]
+            return {};
+        return frame_error(in);
     }
-    if (in.size() < frame_size) return robowire::detail::fail_at(errc::too_short, in.size());
-    if (in.size() > frame_size) return fail(errc::too_long, frame_size);
-    return {};
 }
 // Fixed bytes checked by the frame already: makes the message and decodes its fields in place.
 template <std::size_t I>
@@ -136,7 +149,13 @@ constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) no
         d = e;
         return d;
     }
-    d.frame_ = osp::frame{in[2], in[3], {in[4], in[5], in[6], in[7]}};
+    if (std::is_constant_evaluated()) {
+        d.frame_ = osp::frame{in[2], in[3], {in[4], in[5], in[6], in[7]}};
+    } else {  // one wide copy, not six bytes
+        osp::frame f;
+        std::memcpy(&f, data + 2, sizeof f);
+        d.frame_ = f;
+    }
     decode_by_key(d, static_cast<std::uint16_t>(in[2] << 8 | in[3]), in,
                   std::make_index_sequence<std::variant_size_v<Message>>{});
     return d;
