@@ -44,8 +44,12 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const st
     constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input();
     if (const error e = check_fixed<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{}); e.code != errc::ok)
         return e;
-    if (in.size() < min || in.size() > max) [[unlikely]]
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // no call
+        if (in.size() < min) return fail_at(errc::too_short, in.size());
+        if (in.size() > max) return fail_at(errc::too_long, max);
+    } else if (in.size() < min || in.size() > max) [[unlikely]] {
         return length_error(in.size(), min, max);
+    }
     return decode_body(out, in);
 }
 // decode_into's work, out of line: the input as pointer and size (a span that an

@@ -104,11 +104,17 @@ constexpr std::size_t index_of_key(std::uint8_t key) noexcept {
     }
 }
 
+// Makes alternative I in r (see decode_variant_at) and returns it.
+template <std::size_t I, class Variant>
+ROBOWIRE_ALWAYS_INLINE constexpr auto& make_alternative(result<Variant>& r) noexcept {
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) return emplace_alternative<I>(built_value(r));  // r holds a value
+    else return *std::get_if<I>(&build_value(r, std::in_place_index<I>));                 // r holds an error
+}
 // Makes alternative I of r's variant and decodes `in` into it, in place.
 // Checked: fixed bytes and length checked already (see check_alternative).
 template <std::size_t I, std::size_t KeyOffset, bool Checked, class Variant>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r, std::span<const std::uint8_t> in) noexcept {
-    auto& m = *std::get_if<I>(&build_value(r, std::in_place_index<I>));  // r held an error
+    auto& m = make_alternative<I>(r);
     error e{};
     if constexpr (Checked) e = decode_body(m, in);
     else e = decode_checked<KeyOffset>(m, in);  // the key matched already
@@ -152,17 +158,35 @@ ROBOWIRE_ALWAYS_INLINE constexpr error check_alternative(std::size_t index, std:
 }  // namespace detail
 
 namespace detail {
+// Index of the smallest alternative: the cheapest value a variant can start
+// with before the decoded alternative replaces it.
+template <class Variant>
+struct smallest_alternative;
+template <class... M>
+struct smallest_alternative<std::variant<M...>> {
+    static constexpr std::size_t value = [] {
+        constexpr std::size_t sizes[] = {sizeof(M)...};
+        std::size_t best = 0;
+        for (std::size_t i = 1; i < sizeof...(M); ++i)
+            if (sizes[i] < sizes[best]) best = i;
+        return best;
+    }();
+};
 // decode_variant's work, out of line: the input as pointer and size (a span that
 // an inlined caller passes on by value is copied through the stack first).
 template <class Variant, std::size_t KeyOffset>
 constexpr result<Variant> decode_variant_at(const std::uint8_t* data, std::size_t size) noexcept {
     const std::span<const std::uint8_t> in(data, size);
-    // An error until the decoded alternative is built in place (nothing cleared first).
-    result<Variant> r = fail(errc::unknown_message, KeyOffset);
+    // An error until the decoded alternative is built in place (nothing cleared
+    // first); under ROBOWIRE_OPTIMIZE_SIZE the smallest alternative, replaced below.
+    result<Variant> r = ROBOWIRE_OPTIMIZE_SIZE
+                            ? result<Variant>{std::in_place, std::in_place_index<smallest_alternative<Variant>::value>}
+                            : result<Variant>{fail(errc::unknown_message, KeyOffset)};
     if (in.size() <= KeyOffset) {
         r = fail(errc::too_short, in.size());
     } else if (const std::size_t index = index_of_key<Variant, KeyOffset>(in[KeyOffset]);
                index == std::variant_size_v<Variant>) {
+        if constexpr (ROBOWIRE_OPTIMIZE_SIZE) r = fail(errc::unknown_message, KeyOffset);
     } else if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
         constexpr auto all = std::make_index_sequence<std::variant_size_v<Variant>>{};
         if (const error e = check_alternative<Variant, KeyOffset>(index, in, all); e.code != errc::ok) r = e;

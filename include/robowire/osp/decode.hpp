@@ -149,7 +149,7 @@ constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) no
         d = e;
         return d;
     }
-    if (std::is_constant_evaluated()) {
+    if (ROBOWIRE_OPTIMIZE_SIZE || std::is_constant_evaluated()) {
         d.frame_ = osp::frame{in[2], in[3], {in[4], in[5], in[6], in[7]}};
     } else {  // one wide copy, not six bytes
         osp::frame f;

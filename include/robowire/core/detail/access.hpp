@@ -59,17 +59,26 @@ constexpr bool decode_in_loop() noexcept {
 template <class F>
 constexpr bool encode_in_loop() noexcept { return ROBOWIRE_ARRAY_LOOPS != 0 && F::count >= 2; }
 
-// An array of bytes that needs no validation: copied whole (one memcpy at run time).
+// An array of at least 4 one-byte integers whose wire bytes are their memory
+// bytes: stored whole once checked (one memcpy at run time).
 template <class M, std::size_t I>
-inline constexpr bool plain_byte_array_v = [] {
+inline constexpr bool byte_array_v = [] {
     using F = field_t<M, I>;
     using E = typename F::element_type;
     if constexpr (!F::is_array || F::count < 4 || std::is_enum_v<E> || std::is_same_v<E, bool> || sizeof(E) != 1 ||
                   !std::is_integral_v<E>) {
         return false;
-    } else if constexpr (F::kind != wire_kind::u8 && F::kind != wire_kind::i8) {
+    } else {
+        return F::kind == wire_kind::u8 || F::kind == wire_kind::i8;
+    }
+}();
+// Such an array that needs no validation: also decoded whole.
+template <class M, std::size_t I>
+inline constexpr bool plain_byte_array_v = [] {
+    if constexpr (!byte_array_v<M, I>) {
         return false;
     } else {
+        using E = typename field_t<M, I>::element_type;
         return field_v<M, I>.valid.min == std::numeric_limits<E>::min() &&
                field_v<M, I>.valid.max == std::numeric_limits<E>::max();
     }

@@ -156,7 +156,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr void store_array(const V& v, std::span<std::uin
 template <class M, std::size_t I, class V>
 ROBOWIRE_ALWAYS_INLINE constexpr void store_value(const V& v, std::span<std::uint8_t> out, std::size_t off) noexcept {
     using F = field_t<M, I>;
-    if constexpr (plain_byte_array_v<M, I>) {
+    // Checked already: whole, unless it would be a memcpy call under ROBOWIRE_OPTIMIZE_SIZE.
+    if constexpr (plain_byte_array_v<M, I> || (!ROBOWIRE_OPTIMIZE_SIZE && byte_array_v<M, I>)) {
         if (!std::is_constant_evaluated()) {
             std::memcpy(out.data() + off, v.data(), F::count);
             return;
