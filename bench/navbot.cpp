@@ -2,6 +2,9 @@
 // Baseline: the hand-written code a careful user would write.
 #include <robowire/navbot.hpp>
 
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
 #include <string>
 
 #include "common.hpp"
@@ -143,32 +146,113 @@ void json_robowire(benchmark::State& state) {
     }
     state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * 200);
 }
+// The hand-written receiver: the same rules as robowire's reassembler (and as
+// firmware/hw_navbot.cpp, which tests/navbot/baseline.cpp checks against it):
+// the frame's length and header are checked, a repeat of the last frame of a
+// multi-frame message is ignored, a one-frame message of another command
+// passes through, a sender starting over restarts the message, and after an
+// error the rest of the broken message is discarded.
+enum outcome : std::uint8_t { need_more, complete, single, duplicate, restarted, discarded };
+enum hw_err : std::uint8_t { ok = 0, too_short = 1, too_long = 2, bad_header = 4, capacity_exceeded = 15,
+                             bad_sequence = 16, command_changed = 17 };
+struct pushed {  // an error code and the byte it is about, or the outcome
+    hw_err error;
+    std::uint8_t at;
+    outcome what;
+};
+constexpr pushed done(outcome o) { return {ok, 0, o}; }
+constexpr pushed fail(hw_err e, std::size_t at) { return {e, static_cast<std::uint8_t>(at), need_more}; }
+struct hw_frame {
+    std::uint8_t command, remaining;
+    std::uint8_t payload[15];
+};
+template <std::size_t Capacity>
+struct hw_reassembler {
+    std::uint8_t buf[Capacity];
+    std::size_t size;
+    std::uint8_t last_remaining, command;
+    std::uint8_t state;  // 0 idle, 1 collecting, 2 complete
+    bool has_last, skipping;
+    std::uint8_t skip_command;
+    hw_frame last;
+    void remember(const hw_frame& f) { has_last = true; last = f; }
+    void skip(std::uint8_t c) { skipping = true; skip_command = c; }
+    pushed append(const hw_frame& f) {
+        std::memcpy(buf + size, f.payload, 15);
+        size += 15;
+        if (f.remaining != 0 || size > 15) remember(f);
+        last_remaining = f.remaining;
+        state = f.remaining == 0 ? 2 : 1;
+        return done(f.remaining == 0 ? complete : need_more);
+    }
+    pushed start(const hw_frame& f) {
+        state = 0;
+        size = 0;
+        command = f.command;
+        if (f.remaining + 1u > Capacity / 15) {
+            has_last = false;
+            if (f.remaining != 0) { remember(f); skip(f.command); }
+            return fail(capacity_exceeded, 3);
+        }
+        return append(f);
+    }
+    pushed push(const std::uint8_t* p, std::size_t n) {
+        if (n > 0 && p[0] != 0x55) return fail(bad_header, 0);  // robowire's order: the header bytes
+        if (n > 1 && p[1] != 0xAA) return fail(bad_header, 1);  // that are there, then the length
+        if (n < 20) return fail(too_short, n);
+        if (n > 20) return fail(too_long, 20);
+        hw_frame f;
+        f.command = p[2];
+        f.remaining = p[3];
+        std::memcpy(f.payload, p + 5, 15);
+        if (has_last && std::memcmp(&f, &last, sizeof f) == 0) return done(duplicate);
+        if (state == 2) { state = 0; size = 0; }
+        if (skipping && f.command == skip_command) {
+            if (f.remaining == 0) skipping = false;
+            remember(f);
+            return done(discarded);
+        }
+        if (state == 0) return start(f);
+        if (f.command != command) {
+            if (f.remaining == 0) return done(single);
+            const std::uint8_t broken = command;
+            if (auto e = start(f); e.error) return e;
+            skip(broken);
+            return fail(command_changed, 2);
+        }
+        if (f.remaining >= last_remaining) {
+            if (auto e = start(f); e.error) return e;
+            return done(restarted);
+        }
+        if (f.remaining + 1 != last_remaining) {  // frames lost
+            state = 0;
+            size = 0;
+            remember(f);
+            if (f.remaining != 0) skip(f.command);
+            return fail(bad_sequence, 3);
+        }
+        return append(f);
+    }
+};
 void json_handwritten(benchmark::State& state) {
     const auto v = json_payloads();
-    std::array<std::uint8_t, 210> buf{};
+    hw_reassembler<210> r{};
     std::size_t i = 0;
     for (auto _ : bench::measure(state)) {
+        // sender: the frames of one JSON message (at most 256)
         const std::string_view s = v[i++ % v.size()];
-        const std::size_t frames = (s.size() + 14) / 15;
-        std::size_t have = 0;
-        int expect = -1;
+        const std::size_t frames = s.empty() ? 1 : (s.size() + 14) / 15;
+        if (frames > 256) std::abort();
         for (std::size_t k = 0; k < frames; ++k) {
             std::uint8_t f[20] = {0x55, 0xAA, 0x02, static_cast<std::uint8_t>(frames - 1 - k), 0};
             const std::size_t n = std::min<std::size_t>(15, s.size() - 15 * k);
             std::memcpy(f + 5, s.data() + 15 * k, n);
             std::memset(f + 5 + n, 0, 15 - n);
-            benchmark::DoNotOptimize(f);
             // receiver
-            if (f[0] != 0x55 || f[1] != 0xAA) continue;
-            if (expect >= 0 && f[3] != expect - 1) { have = 0; expect = -1; continue; }
-            if (have + 15 > buf.size()) { have = 0; expect = -1; continue; }
-            std::memcpy(buf.data() + have, f + 5, 15);
-            have += 15;
-            expect = f[3];
-            if (f[3] == 0) expect = -1;
+            auto st = r.push(f, sizeof f);
+            benchmark::DoNotOptimize(st);
         }
-        benchmark::DoNotOptimize(buf);
-        benchmark::DoNotOptimize(have);
+        benchmark::DoNotOptimize(r.buf);
     }
     state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * 200);
 }

@@ -4,8 +4,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <string_view>
+#include <type_traits>
 
 #include "frame.hpp"
 
@@ -41,7 +43,14 @@ public:
         out[2] = command_;
         out[3] = static_cast<std::uint8_t>(size() - 1 - i);
         const std::size_t from = i * payload_size;
-        for (std::size_t k = 0; k < payload_size && from + k < payload_.size(); ++k) out[5 + k] = static_cast<std::uint8_t>(payload_[from + k]);
+        if (std::is_constant_evaluated() || ROBOWIRE_OPTIMIZE_SIZE) {
+            for (std::size_t k = 0; k < payload_size && from + k < payload_.size(); ++k)
+                out[5 + k] = static_cast<std::uint8_t>(payload_[from + k]);
+        } else {  // two fixed-size copies, not a byte loop that checks the end at every byte
+            const std::size_t left = from < payload_.size() ? payload_.size() - from : 0;
+            detail::copy_small(out.data() + 5, reinterpret_cast<const std::uint8_t*>(payload_.data() + from),
+                               left < payload_size ? left : payload_size);
+        }
         return out;
     }
 
@@ -237,7 +246,12 @@ private:
         return append(f);
     }
     constexpr result<reassembly> append(const frame& f) noexcept {
-        for (std::size_t i = 0; i < payload_size; ++i) buf_[size_ + i] = f.payload[i];
+        // one fixed-size copy at run time (a byte loop reloads size_ after every byte: the stores may alias it)
+        if (std::is_constant_evaluated() || ROBOWIRE_OPTIMIZE_SIZE) {
+            for (std::size_t i = 0; i < payload_size; ++i) buf_[size_ + i] = f.payload[i];
+        } else {
+            std::memcpy(buf_.data() + size_, f.payload.data(), payload_size);
+        }
         size_ += payload_size;
         // repeats are recognised for frames of multi-frame messages only: a
         // one-frame message sent twice (e.g. the same maneuver) is two messages

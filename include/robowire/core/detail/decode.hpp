@@ -39,7 +39,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_scalar(E& v, std::span<const std::u
         else raw = load_le<typename W::raw_type>(in.data() + off);
         if constexpr (std::is_enum_v<E>) {
             const auto e = static_cast<E>(raw);
-            if (!is_valid_enum(e)) { err = fail_at(errc::invalid_enum, off); return false; }
+            if (!is_valid_enum(e)) [[unlikely]] { err = fail_at(errc::invalid_enum, off); return false; }
             v = e;
         } else {
             constexpr range full = [] {  // what the wire bytes can hold
@@ -47,7 +47,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_scalar(E& v, std::span<const std::u
                 else return range{std::numeric_limits<typename W::raw_type>::min(), std::numeric_limits<typename W::raw_type>::max()};
             }();
             if constexpr (Min > full.min || Max < full.max) {
-                if (!in_range<Min, Max, full.min, full.max>(raw)) {
+                if (!in_range<Min, Max, full.min, full.max>(raw)) [[unlikely]] {
                     err = fail_at(errc::value_out_of_range, off);
                     return false;
                 }
@@ -171,16 +171,32 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
 
 // No byte offset (check_fixed: no fixed byte is skipped).
 inline constexpr std::size_t no_offset = static_cast<std::size_t>(-1);
+// Is the fixed byte K of M (not the one at offset Skip) in `in` and wrong? Then e is its error.
+template <class M, std::size_t Skip, std::size_t K>
+ROBOWIRE_ALWAYS_INLINE constexpr bool fixed_wrong(std::span<const std::uint8_t> in, error& e) noexcept {
+    constexpr auto fixed = table_v<M>.fixed[K];
+    if constexpr (fixed.offset == Skip) {
+        return false;
+    } else {
+        const bool wrong = fixed.offset < in.size() && in[fixed.offset] != fixed.value;
+        if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
+            if (wrong) {
+                e = {fixed.code, fixed.offset};
+                return true;
+            }
+        } else if (wrong) [[unlikely]] {  // the error is set in the branch, not before the compare
+            e = {fixed.code, fixed.offset};
+            return true;
+        }
+        return false;
+    }
+}
 // The first fixed byte of M that `in` has and gets wrong, as an error (code ok if none).
 // Skip: the offset of a fixed byte not to check (matched by a dispatcher already).
 template <class M, std::size_t Skip = no_offset, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr error check_fixed(std::span<const std::uint8_t> in, std::index_sequence<K...>) noexcept {
     error e{};
-    (void)((((table_v<M>.fixed[K].offset != Skip) && (table_v<M>.fixed[K].offset < in.size()) &&
-             in[table_v<M>.fixed[K].offset] != table_v<M>.fixed[K].value)
-                ? (e = {table_v<M>.fixed[K].code, table_v<M>.fixed[K].offset}, true)
-                : false) ||
-           ...);
+    (void)(fixed_wrong<M, Skip, K>(in, e) || ...);
     return e;
 }
 

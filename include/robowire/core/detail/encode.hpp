@@ -30,7 +30,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_scalar(const E& v, std::size_t off, 
     if constexpr (W::kind == wire_kind::f32le) {
         return true;
     } else if constexpr (std::is_enum_v<E>) {
-        if (!is_valid_enum(v)) { err = fail_at(errc::invalid_enum, off); return false; }
+        if (!is_valid_enum(v)) [[unlikely]] { err = fail_at(errc::invalid_enum, off); return false; }
         return true;
     } else {
         if constexpr (W::kind == wire_kind::bits || std::is_same_v<E, bool> ||
@@ -41,7 +41,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_scalar(const E& v, std::size_t off, 
             if constexpr (Max >= hi) valid = static_cast<std::int64_t>(v) >= Min;  // one bound: one compare
             else if constexpr (Min <= lo) valid = static_cast<std::int64_t>(v) <= Max;
             else valid = in_range<Min, Max, lo, hi>(static_cast<std::int64_t>(v));
-            if (!valid) {
+            if (!valid) [[unlikely]] {
                 err = fail_at(errc::value_out_of_range, off);
                 return false;
             }
