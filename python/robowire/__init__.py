@@ -1,0 +1,29 @@
+"""robowire: BuWizz3, NAVBOT-ES02 and OSP codecs, built from the C++ library's tables.
+
+    from robowire import buwizz3, navbot, osp
+    buwizz3.decode(data)            # -> dict, as `robowire decode --json` prints it
+    buwizz3.encode("set_motor_data", power=[100, -100, 0, 0, 0, 0])  # -> bytes
+"""
+from __future__ import annotations
+
+import json as _json
+from typing import Any, Optional
+
+from ._errors import DecodeError, EncodeError
+from . import _robowire
+from . import buwizz3, navbot, osp  # noqa: E402 (after _robowire)
+
+__all__ = ["DecodeError", "EncodeError", "buwizz3", "navbot", "osp", "schema", "error_codes", "__version__"]
+__version__ = "0.1.0"
+
+#: Every error code (the values of DecodeError.code / EncodeError.code) and its text.
+error_codes: dict[str, str] = dict(_robowire.error_codes)
+
+
+def schema(protocol: Optional[str] = None) -> dict[str, Any]:
+    """The tables: every message, field, wire type, range, unit, enum and flag bit,
+    in the format of `robowire list --json` (docs/python.md)."""
+    if protocol is not None and protocol not in ("buwizz3", "navbot", "osp"):
+        raise KeyError(f"unknown protocol {protocol!r} (buwizz3, navbot, osp)")
+    result: dict[str, Any] = _json.loads(_robowire.schema_json(protocol or ""))
+    return result
