@@ -336,9 +336,34 @@ struct place {
 
 inline std::string type_name(PyObject* o) { return Py_TYPE(o)->tp_name; }
 
-template <class Top>
-[[noreturn]] void out_of_range(errc code, std::size_t offset) {
-    raise_for<Top>(classes().encode, robowire::error{code, static_cast<std::uint16_t>(offset)});
+// Raises EncodeError for a value of field f that cannot be encoded, in
+// describe_error's format ("maneuver.pitch: value out of range (valid
+// -100..100 %) at byte 7"); `path` without the array indices names the field
+// ("set_led_status.colors.g" inside a record).
+template <class Top, class F>
+[[noreturn]] void field_error(const F& f, const std::string& path, errc code, std::size_t offset) {
+    std::string name;
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        if (path[i] == '[') i = path.find(']', i);
+        else name += path[i];
+    }
+    std::string text = name + ": " + std::string(robowire::to_string(code));
+    if (code == errc::value_out_of_range) {
+        using E = element_t<F>;
+        if constexpr (F::kind == wire_kind::text) {
+            text += " (valid up to " + std::to_string(E::capacity()) + " bytes)";
+        } else if constexpr (std::is_floating_point_v<E>) {
+            text += " (valid a 32-bit float)";
+        } else if constexpr (std::is_integral_v<E>) {
+            text += " (valid " + std::to_string(f.valid.min) + ".." + std::to_string(f.valid.max);
+            if (!f.unit.name.empty()) text += f.unit.raw_is_physical ? " " + std::string(f.unit.name) : std::string(" raw");
+            text += ")";
+        }
+    }
+    text += " at byte " + std::to_string(offset);
+    const auto dot = name.find('.');
+    raise(classes().encode, text, code, offset, dot == std::string::npos ? std::string_view{} : std::string_view(name).substr(dot + 1),
+          robowire::table_v<Top>.name);
 }
 
 template <class Top, class M>
@@ -355,7 +380,7 @@ void read_element(const F& f, E& v, PyObject* o, const place& at, bool ignore_de
         if (!PyLong_Check(o)) throw py::type_error(at.path + ": expected a bool, got " + type_name(o));
         const long x = PyLong_AsLong(o);
         if (x == -1 && PyErr_Occurred()) PyErr_Clear();
-        if (x != 0 && x != 1) out_of_range<Top>(errc::value_out_of_range, at.offset);
+        if (x != 0 && x != 1) field_error<Top>(f, at.path, errc::value_out_of_range, at.offset);
         v = x == 1;
     } else if constexpr (std::is_enum_v<E>) {
         if (PyUnicode_Check(o)) {
@@ -363,7 +388,7 @@ void read_element(const F& f, E& v, PyObject* o, const place& at, bool ignore_de
             const char* s = PyUnicode_AsUTF8AndSize(o, &n);
             if (!s) throw py::error_already_set();
             const auto e = robowire::enum_from_name<E>(std::string_view(s, static_cast<std::size_t>(n)));
-            if (!e) out_of_range<Top>(errc::invalid_enum, at.offset);
+            if (!e) field_error<Top>(f, at.path, errc::invalid_enum, at.offset);
             v = *e;
         } else if (PyLong_Check(o)) {
             int overflow = 0;
@@ -371,7 +396,7 @@ void read_element(const F& f, E& v, PyObject* o, const place& at, bool ignore_de
             using U = std::underlying_type_t<E>;
             if (overflow || x < std::numeric_limits<U>::min() || x > std::numeric_limits<U>::max() ||
                 !robowire::is_valid_enum(static_cast<E>(static_cast<U>(x))))
-                out_of_range<Top>(errc::invalid_enum, at.offset);
+                field_error<Top>(f, at.path, errc::invalid_enum, at.offset);
             v = static_cast<E>(static_cast<U>(x));
         } else {
             throw py::type_error(at.path + ": expected a name (str) or code (int), got " + type_name(o));
@@ -381,10 +406,10 @@ void read_element(const F& f, E& v, PyObject* o, const place& at, bool ignore_de
         const double x = PyFloat_AsDouble(o);
         if (x == -1.0 && PyErr_Occurred()) {  // an int too large for a double
             PyErr_Clear();
-            out_of_range<Top>(errc::value_out_of_range, at.offset);
+            field_error<Top>(f, at.path, errc::value_out_of_range, at.offset);
         }
         if (std::isfinite(x) && std::fabs(x) > static_cast<double>(std::numeric_limits<E>::max()))
-            out_of_range<Top>(errc::value_out_of_range, at.offset);
+            field_error<Top>(f, at.path, errc::value_out_of_range, at.offset);
         v = static_cast<E>(x);
     } else if constexpr (std::is_integral_v<E>) {
         if (!PyLong_Check(o)) throw py::type_error(at.path + ": expected an int, got " + type_name(o));
@@ -392,14 +417,14 @@ void read_element(const F& f, E& v, PyObject* o, const place& at, bool ignore_de
         const long long x = PyLong_AsLongLongAndOverflow(o, &overflow);
         if (x == -1 && PyErr_Occurred()) throw py::error_already_set();
         if (overflow || x < f.valid.min || x > f.valid.max || !std::in_range<E>(x))
-            out_of_range<Top>(errc::value_out_of_range, at.offset);
+            field_error<Top>(f, at.path, errc::value_out_of_range, at.offset);
         v = static_cast<E>(x);
     } else if constexpr (requires { v.view(); }) {  // text
         if (!PyUnicode_Check(o)) throw py::type_error(at.path + ": expected a str, got " + type_name(o));
         py::object utf8 = steal(PyUnicode_AsEncodedString(o, "utf-8", "surrogateescape"));
         const std::string_view s(PyBytes_AS_STRING(utf8.ptr()), static_cast<std::size_t>(PyBytes_GET_SIZE(utf8.ptr())));
         const auto t = E::make(s);
-        if (!t) out_of_range<Top>(errc::value_out_of_range, at.offset);
+        if (!t) field_error<Top>(f, at.path, errc::value_out_of_range, at.offset);
         v = *t;
     } else {  // a byte tail: bytes-like, or hex text as decode gives it
         py::object raw;
@@ -418,7 +443,7 @@ void read_element(const F& f, E& v, PyObject* o, const place& at, bool ignore_de
         }
         const auto* p = reinterpret_cast<const std::uint8_t*>(PyBytes_AS_STRING(raw.ptr()));
         const auto x = E::from(std::span<const std::uint8_t>(p, static_cast<std::size_t>(PyBytes_GET_SIZE(raw.ptr()))));
-        if (!x) out_of_range<Top>(errc::capacity_exceeded, at.offset);
+        if (!x) field_error<Top>(f, at.path, errc::capacity_exceeded, at.offset);
         v = *x;
     }
 }
@@ -540,12 +565,16 @@ std::string message_names() {
     return s;
 }
 
-// Does `in` carry M's fixed bytes, as far as it goes?
+// Does `in` carry M's fixed bytes, as far as it goes (and reach one of them)?
 template <class M>
 bool carries_fixed_bytes(std::span<const std::uint8_t> in) {
-    for (const auto& b : robowire::table_v<M>.fixed)
-        if (b.offset < in.size() && in[b.offset] != b.value) return false;
-    return !robowire::table_v<M>.fixed.empty();
+    bool reached = false;
+    for (const auto& b : robowire::table_v<M>.fixed) {
+        if (b.offset >= in.size()) continue;
+        if (in[b.offset] != b.value) return false;
+        reached = true;
+    }
+    return reached;
 }
 // Raises DecodeError for a decode error of variant V: described by the
 // alternative whose fixed bytes the input carries (as the tool does).
