@@ -135,6 +135,9 @@ struct field_keys {
     PyObject* physical;
     PyObject* bits;
     std::vector<flag_key> flags;
+    PyObject* unit = nullptr;    // the unit's name (fields with a unit)
+    bool exact = false;          // physical = raw (scale 1, offset 0): no rounding needed
+    std::vector<double> by_byte; // one-byte fields: the physical value of each raw byte, worked out once
 };
 
 template <class M>
@@ -145,7 +148,22 @@ const std::vector<field_keys>& keys_of() {
             std::string n(f.name), phys;
             if (n.size() > 4 && n.compare(n.size() - 4, 4, "_raw") == 0) phys = n.substr(0, n.size() - 4);
             else phys = n + "_physical";
-            field_keys k{interned(n), interned(phys), interned(n + "_bits"), {}};
+            field_keys k{interned(n), interned(phys), interned(n + "_bits"), {}, nullptr, false, {}};
+            using F = std::remove_cvref_t<decltype(f)>;
+            using E = element_t<F>;
+            if (!f.unit.name.empty()) {
+                k.unit = interned(f.unit.name);
+                k.exact = f.unit.scale == 1.0 && f.unit.offset == 0.0;
+                if constexpr (std::is_integral_v<E> && !std::is_same_v<E, bool> && sizeof(E) == 1) {
+                    if (!k.exact) {
+                        k.by_byte.resize(256);
+                        for (unsigned b = 0; b < 256; ++b) {
+                            const auto raw = static_cast<E>(static_cast<std::uint8_t>(b));
+                            k.by_byte[b] = tidy(static_cast<double>(raw) * f.unit.scale + f.unit.offset);
+                        }
+                    }
+                }
+            }
             if constexpr (robowire::has_flag_bits<M>) {
                 for (const auto& b : robowire::flag_bits_v<M>) {
                     if (b.field != f.name) continue;
@@ -213,6 +231,14 @@ PyObject* element_py(const E& v) {
     }
 }
 
+// The physical value of raw value v of a field with a unit, rounded as the tool rounds it.
+template <class F, class E>
+double physical_of(const field_keys& k, const F& f, E v) {
+    if (k.exact) return static_cast<double>(v);
+    if constexpr (sizeof(E) == 1) return k.by_byte[static_cast<std::uint8_t>(v)];
+    else return tidy(static_cast<double>(v) * f.unit.scale + f.unit.offset);
+}
+
 template <class F>
 constexpr bool has_physical() {
     using E = element_t<F>;
@@ -258,11 +284,11 @@ PyObject* fields_dict(const M& m) {
                     PyObject* phys = PyList_New(static_cast<Py_ssize_t>(F::count));
                     if (!phys) throw py::error_already_set();
                     for (std::size_t i = 0; i < F::count; ++i)
-                        PyList_SET_ITEM(phys, static_cast<Py_ssize_t>(i),
-                                        PyFloat_FromDouble(tidy(static_cast<double>((*value)[i]) * f.unit.scale + f.unit.offset)));
+                        PyList_SET_ITEM(phys, static_cast<Py_ssize_t>(i), PyFloat_FromDouble(physical_of(k, f, (*value)[i])));
                     PyObject* pd = PyDict_New();
                     set_item(pd, value_key(), phys);
-                    set_item(pd, unit_key(), PyUnicode_FromStringAndSize(f.unit.name.data(), static_cast<Py_ssize_t>(f.unit.name.size())));
+                    Py_INCREF(k.unit);
+                    set_item(pd, unit_key(), k.unit);
                     set_item(d, k.physical, pd);
                 }
             }
@@ -271,8 +297,9 @@ PyObject* fields_dict(const M& m) {
             if constexpr (has_physical<F>()) {
                 if (with_unit) {
                     PyObject* pd = PyDict_New();
-                    set_item(pd, value_key(), PyFloat_FromDouble(tidy(static_cast<double>(*value) * f.unit.scale + f.unit.offset)));
-                    set_item(pd, unit_key(), PyUnicode_FromStringAndSize(f.unit.name.data(), static_cast<Py_ssize_t>(f.unit.name.size())));
+                    set_item(pd, value_key(), PyFloat_FromDouble(physical_of(k, f, *value)));
+                    Py_INCREF(k.unit);
+                    set_item(pd, unit_key(), k.unit);
                     set_item(d, k.physical, pd);
                 }
                 if constexpr (robowire::has_flag_bits<M>) {
@@ -327,11 +354,18 @@ py::dict variant_dict(PyObject* protocol, const V& v) {
 }
 
 // ---------------------------------------------------------------- dict -> message
-// Where a value goes: the message being encoded (for describe_error), the
-// path shown in TypeError / ValueError, and the element's byte offset.
-struct place {
-    std::string path;
-    std::size_t offset;
+// Where a value goes, for messages only (built into text on an error):
+// "set_led_status" . "colors" [1] . "g".
+struct path {
+    const path* parent = nullptr;
+    std::string_view name{};
+    std::size_t index = static_cast<std::size_t>(-1);  // array element, or none
+    std::string str() const {
+        std::string s = parent ? parent->str() + "." : std::string();
+        s += name;
+        if (index != static_cast<std::size_t>(-1)) s += "[" + std::to_string(index) + "]";
+        return s;
+    }
 };
 
 inline std::string type_name(PyObject* o) { return Py_TYPE(o)->tp_name; }
@@ -367,20 +401,20 @@ template <class Top, class F>
 }
 
 template <class Top, class M>
-void fill(M& m, PyObject* dict, std::size_t base, const std::string& prefix, bool ignore_derived);
+void fill(M& m, PyObject* dict, std::size_t base, const path* parent, bool ignore_derived);
 
 // Reads one element from `o` into v.
 template <class Top, class F, class E>
-void read_element(const F& f, E& v, PyObject* o, const place& at, bool ignore_derived) {
+void read_element(const F& f, E& v, PyObject* o, const path& at, std::size_t offset, bool ignore_derived) {
     if constexpr (F::kind == wire_kind::record) {
-        if (!PyDict_Check(o)) throw py::type_error(at.path + ": expected a dict of " + std::string(robowire::table_v<E>.name) +
+        if (!PyDict_Check(o)) throw py::type_error(at.str() + ": expected a dict of " + std::string(robowire::table_v<E>.name) +
                                                    " fields, got " + type_name(o));
-        fill<Top>(v, o, at.offset, at.path + ".", ignore_derived);
+        fill<Top>(v, o, offset, &at, ignore_derived);
     } else if constexpr (std::is_same_v<E, bool>) {
-        if (!PyLong_Check(o)) throw py::type_error(at.path + ": expected a bool, got " + type_name(o));
+        if (!PyLong_Check(o)) throw py::type_error(at.str() + ": expected a bool, got " + type_name(o));
         const long x = PyLong_AsLong(o);
         if (x == -1 && PyErr_Occurred()) PyErr_Clear();
-        if (x != 0 && x != 1) field_error<Top>(f, at.path, errc::value_out_of_range, at.offset);
+        if (x != 0 && x != 1) field_error<Top>(f, at.str(), errc::value_out_of_range, offset);
         v = x == 1;
     } else if constexpr (std::is_enum_v<E>) {
         if (PyUnicode_Check(o)) {
@@ -388,7 +422,7 @@ void read_element(const F& f, E& v, PyObject* o, const place& at, bool ignore_de
             const char* s = PyUnicode_AsUTF8AndSize(o, &n);
             if (!s) throw py::error_already_set();
             const auto e = robowire::enum_from_name<E>(std::string_view(s, static_cast<std::size_t>(n)));
-            if (!e) field_error<Top>(f, at.path, errc::invalid_enum, at.offset);
+            if (!e) field_error<Top>(f, at.str(), errc::invalid_enum, offset);
             v = *e;
         } else if (PyLong_Check(o)) {
             int overflow = 0;
@@ -396,35 +430,35 @@ void read_element(const F& f, E& v, PyObject* o, const place& at, bool ignore_de
             using U = std::underlying_type_t<E>;
             if (overflow || x < std::numeric_limits<U>::min() || x > std::numeric_limits<U>::max() ||
                 !robowire::is_valid_enum(static_cast<E>(static_cast<U>(x))))
-                field_error<Top>(f, at.path, errc::invalid_enum, at.offset);
+                field_error<Top>(f, at.str(), errc::invalid_enum, offset);
             v = static_cast<E>(static_cast<U>(x));
         } else {
-            throw py::type_error(at.path + ": expected a name (str) or code (int), got " + type_name(o));
+            throw py::type_error(at.str() + ": expected a name (str) or code (int), got " + type_name(o));
         }
     } else if constexpr (std::is_floating_point_v<E>) {
-        if (!PyFloat_Check(o) && !PyLong_Check(o)) throw py::type_error(at.path + ": expected a float, got " + type_name(o));
+        if (!PyFloat_Check(o) && !PyLong_Check(o)) throw py::type_error(at.str() + ": expected a float, got " + type_name(o));
         const double x = PyFloat_AsDouble(o);
         if (x == -1.0 && PyErr_Occurred()) {  // an int too large for a double
             PyErr_Clear();
-            field_error<Top>(f, at.path, errc::value_out_of_range, at.offset);
+            field_error<Top>(f, at.str(), errc::value_out_of_range, offset);
         }
         if (std::isfinite(x) && std::fabs(x) > static_cast<double>(std::numeric_limits<E>::max()))
-            field_error<Top>(f, at.path, errc::value_out_of_range, at.offset);
+            field_error<Top>(f, at.str(), errc::value_out_of_range, offset);
         v = static_cast<E>(x);
     } else if constexpr (std::is_integral_v<E>) {
-        if (!PyLong_Check(o)) throw py::type_error(at.path + ": expected an int, got " + type_name(o));
+        if (!PyLong_Check(o)) throw py::type_error(at.str() + ": expected an int, got " + type_name(o));
         int overflow = 0;
         const long long x = PyLong_AsLongLongAndOverflow(o, &overflow);
         if (x == -1 && PyErr_Occurred()) throw py::error_already_set();
         if (overflow || x < f.valid.min || x > f.valid.max || !std::in_range<E>(x))
-            field_error<Top>(f, at.path, errc::value_out_of_range, at.offset);
+            field_error<Top>(f, at.str(), errc::value_out_of_range, offset);
         v = static_cast<E>(x);
     } else if constexpr (requires { v.view(); }) {  // text
-        if (!PyUnicode_Check(o)) throw py::type_error(at.path + ": expected a str, got " + type_name(o));
+        if (!PyUnicode_Check(o)) throw py::type_error(at.str() + ": expected a str, got " + type_name(o));
         py::object utf8 = steal(PyUnicode_AsEncodedString(o, "utf-8", "surrogateescape"));
         const std::string_view s(PyBytes_AS_STRING(utf8.ptr()), static_cast<std::size_t>(PyBytes_GET_SIZE(utf8.ptr())));
         const auto t = E::make(s);
-        if (!t) field_error<Top>(f, at.path, errc::value_out_of_range, at.offset);
+        if (!t) field_error<Top>(f, at.str(), errc::value_out_of_range, offset);
         v = *t;
     } else {  // a byte tail: bytes-like, or hex text as decode gives it
         py::object raw;
@@ -433,37 +467,36 @@ void read_element(const F& f, E& v, PyObject* o, const place& at, bool ignore_de
             PyObject* b = PyObject_CallOneArg(fromhex, o);
             if (!b) {
                 PyErr_Clear();
-                throw py::value_error(at.path + ": not hex bytes: " + py::str(o).cast<std::string>());
+                throw py::value_error(at.str() + ": not hex bytes: " + py::str(o).cast<std::string>());
             }
             raw = steal(b);
         } else if (PyObject_CheckBuffer(o)) {
             raw = steal(PyBytes_FromObject(o));
         } else {
-            throw py::type_error(at.path + ": expected bytes or hex text, got " + type_name(o));
+            throw py::type_error(at.str() + ": expected bytes or hex text, got " + type_name(o));
         }
         const auto* p = reinterpret_cast<const std::uint8_t*>(PyBytes_AS_STRING(raw.ptr()));
         const auto x = E::from(std::span<const std::uint8_t>(p, static_cast<std::size_t>(PyBytes_GET_SIZE(raw.ptr()))));
-        if (!x) field_error<Top>(f, at.path, errc::capacity_exceeded, at.offset);
+        if (!x) field_error<Top>(f, at.str(), errc::capacity_exceeded, offset);
         v = *x;
     }
 }
 
 // Reads field f (an array: a list or tuple of exactly its count).
 template <class Top, class F, class T>
-void read_field(const F& f, T& value, PyObject* o, std::size_t base, const std::string& path, bool ignore_derived) {
+void read_field(const F& f, T& value, PyObject* o, std::size_t base, const path& at, bool ignore_derived) {
     if constexpr (F::is_array) {
         if (!PyList_Check(o) && !PyTuple_Check(o))
-            throw py::type_error(path + ": expected a list of " + std::to_string(F::count) + " values, got " + type_name(o));
+            throw py::type_error(at.str() + ": expected a list of " + std::to_string(F::count) + " values, got " + type_name(o));
         const auto n = static_cast<std::size_t>(PySequence_Fast_GET_SIZE(o));
         if (n != F::count)
-            throw py::value_error(path + ": " + std::to_string(n) + (n == 1 ? " value" : " values") + " given, " +
+            throw py::value_error(at.str() + ": " + std::to_string(n) + (n == 1 ? " value" : " values") + " given, " +
                                   std::to_string(F::count) + " expected");
         PyObject** items = PySequence_Fast_ITEMS(o);
         for (std::size_t i = 0; i < F::count; ++i)
-            read_element<Top>(f, value[i], items[i], place{path + "[" + std::to_string(i) + "]", base + f.offset + i * F::element_size},
-                              ignore_derived);
+            read_element<Top>(f, value[i], items[i], path{at.parent, at.name, i}, base + f.offset + i * F::element_size, ignore_derived);
     } else {
-        read_element<Top>(f, value, o, place{path, base + f.offset}, ignore_derived);
+        read_element<Top>(f, value, o, at, base + f.offset, ignore_derived);
     }
 }
 
@@ -493,11 +526,11 @@ std::string field_names() {
 
 // Sets M's fields from the dict's entries; fields not given keep M's defaults.
 template <class Top, class M>
-void fill(M& m, PyObject* dict, std::size_t base, const std::string& prefix, bool ignore_derived) {
+void fill(M& m, PyObject* dict, std::size_t base, const path* parent, bool ignore_derived) {
     PyObject *key = nullptr, *value = nullptr;
     Py_ssize_t pos = 0;
     while (PyDict_Next(dict, &pos, &key, &value)) {
-        if (!PyUnicode_Check(key)) throw py::type_error(prefix + ": field names are str, got " + type_name(key));
+        if (!PyUnicode_Check(key)) throw py::type_error(parent->str() + ": field names are str, got " + type_name(key));
         Py_ssize_t n = 0;
         const char* c = PyUnicode_AsUTF8AndSize(key, &n);
         if (!c) throw py::error_already_set();
@@ -508,17 +541,17 @@ void fill(M& m, PyObject* dict, std::size_t base, const std::string& prefix, boo
             if (found || f.name != name) return;
             found = true;
             auto& member = m.*(f.member);
-            const std::string path = prefix + std::string(name);
+            const path at{parent, f.name};
             if constexpr (F::is_optional) {
                 if (value == Py_None) member.reset();
-                else read_field<Top>(f, member.emplace(), value, base, path, ignore_derived);
+                else read_field<Top>(f, member.emplace(), value, base, at, ignore_derived);
             } else {
-                read_field<Top>(f, member, value, base, path, ignore_derived);
+                read_field<Top>(f, member, value, base, at, ignore_derived);
             }
         });
         if (found) continue;
         if (ignore_derived && derived_key<M>(name)) continue;
-        std::string what = "unknown field " + prefix + std::string(name) + " (fields of " + std::string(robowire::table_v<M>.name) +
+        std::string what = "unknown field " + parent->str() + "." + std::string(name) + " (fields of " + std::string(robowire::table_v<M>.name) +
                            ": " + field_names<M>() + ")";
         if (!ignore_derived && derived_key<M>(name)) what += "; decode adds it beside the raw value, encode takes the raw value";
         throw py::key_error(what);
@@ -529,7 +562,8 @@ void fill(M& m, PyObject* dict, std::size_t base, const std::string& prefix, boo
 template <class M>
 py::bytes encode_fields(PyObject* fields, bool ignore_derived) {
     M m{};
-    if (fields) fill<M>(m, fields, 0, std::string(robowire::table_v<M>.name) + ".", ignore_derived);
+    const path root{nullptr, robowire::table_v<M>.name};
+    if (fields) fill<M>(m, fields, 0, &root, ignore_derived);
     const auto r = robowire::encode(m);
     if (!r) raise_for<M>(classes().encode, r.error());
     return py::bytes(reinterpret_cast<const char*>(r->data()), r->size());
