@@ -39,7 +39,9 @@ extension = Pybind11Extension(
     cxx_std=20,
     extra_compile_args=flags,
     extra_link_args=["-s"],
-    depends=[str(p) for p in sorted((here / "src").glob("*.hpp"))] + [str(root / "tools" / "schema.hpp")],
+    # any header changed: rebuild (setuptools compares these with the built module)
+    depends=[str(p) for p in sorted((here / "src").glob("*.hpp"))] + [str(root / "tools" / "schema.hpp")]
+    + [str(p) for p in sorted(include.rglob("*.hpp"))],
 )
 
 
@@ -49,8 +51,8 @@ class build_ext_and_stubs(build_ext):
     def run(self):
         super().run()
         package_dir = Path(self.get_ext_fullpath("robowire._robowire")).parent
-        sys.path.insert(0, str(package_dir.parent))
-        sys.path.insert(0, str(here))
+        sys.path.insert(0, str(here))  # stubgen.py
+        sys.path.insert(0, str(package_dir.parent))  # the built package, ahead of the sources here
         try:
             for name in [n for n in sys.modules if n == "robowire" or n.startswith("robowire.")]:
                 del sys.modules[name]
