@@ -6,24 +6,28 @@
 """
 from __future__ import annotations
 
-import json as _json
-from typing import Any, Optional
+TYPE_CHECKING = False  # (typing is imported by type checkers only: it costs milliseconds at import)
 
 from ._errors import DecodeError, EncodeError
 from . import _robowire
 from . import buwizz3, navbot, osp  # noqa: E402 (after _robowire)
 
+if TYPE_CHECKING:
+    from typing import Any, Optional
+
 __all__ = ["DecodeError", "EncodeError", "buwizz3", "navbot", "osp", "schema", "error_codes", "__version__"]
 __version__ = "0.1.0"
 
 #: Every error code (the values of DecodeError.code / EncodeError.code) and its text.
-error_codes: dict[str, str] = dict(_robowire.error_codes)
+error_codes: "dict[str, str]" = {k: v for k, v in _robowire.error_codes.items() if k != "ok"}
 
 
 def schema(protocol: Optional[str] = None) -> dict[str, Any]:
     """The tables: every message, field, wire type, range, unit, enum and flag bit,
     in the format of `robowire list --json` (docs/python.md)."""
+    import json
+
     if protocol is not None and protocol not in ("buwizz3", "navbot", "osp"):
         raise KeyError(f"unknown protocol {protocol!r} (buwizz3, navbot, osp)")
-    result: dict[str, Any] = _json.loads(_robowire.schema_json(protocol or ""))
+    result: dict[str, Any] = json.loads(_robowire.schema_json(protocol or ""))
     return result

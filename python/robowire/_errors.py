@@ -1,7 +1,10 @@
 """robowire's exceptions: both are ValueError, so `except ValueError` catches them."""
 from __future__ import annotations
 
-from typing import Optional, Sequence
+TYPE_CHECKING = False  # (typing is imported by type checkers only: it costs milliseconds at import)
+
+if TYPE_CHECKING:
+    from typing import Optional, Sequence
 
 
 class _CodecError(ValueError):

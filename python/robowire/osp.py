@@ -4,10 +4,12 @@ The API is described in docs/python.md; the generated stub osp.pyi lists it.
 """
 from __future__ import annotations
 
-import json as _json
-from typing import Any
+TYPE_CHECKING = False  # (typing is imported by type checkers only: it costs milliseconds at import)
 
 from . import _robowire
+
+if TYPE_CHECKING:
+    from typing import Any
 
 _ext = _robowire.osp
 globals().update({_n: getattr(_ext, _n) for _n in dir(_ext) if not _n.startswith("_")})
@@ -15,7 +17,9 @@ globals().update({_n: getattr(_ext, _n) for _n in dir(_ext) if not _n.startswith
 
 def schema() -> dict[str, Any]:
     """This protocol's entry of robowire.schema()."""
-    entry: dict[str, Any] = _json.loads(_robowire.schema_json("osp"))["protocols"][0]
+    import json
+
+    entry: dict[str, Any] = json.loads(_robowire.schema_json("osp"))["protocols"][0]
     return entry
 
 
