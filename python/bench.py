@@ -19,7 +19,9 @@ import sys
 import timeit
 from typing import Any
 
-from robowire import buwizz3
+# this directory holds robowire's sources (without the compiled part): import the installed package
+sys.path = [p for p in sys.path if os.path.abspath(p or ".") != os.path.dirname(os.path.abspath(__file__))]
+from robowire import buwizz3  # noqa: E402
 
 STATUS_68 = bytes.fromhex(
     "01 73 50 0A 14 1E 28 32 C8 23 F0 FF F0 7F 00 08 0B 0C 0D 0E 0F 7D 30 EC 4C FF 60 79 FE FF 31 64 B3 00 40 E2 01 00 "

@@ -209,6 +209,9 @@ def stubs(robowire: ModuleType) -> dict[str, str]:
 
 
 if __name__ == "__main__":
+    # this directory holds robowire's sources (without the compiled part): import the installed package
+    here = Path(__file__).resolve().parent
+    sys.path = [p for p in sys.path if Path(p or ".").resolve() != here]
     import robowire
 
     target = Path(sys.argv[1] if len(sys.argv) > 1 else ".")

@@ -9,7 +9,12 @@ from __future__ import annotations
 TYPE_CHECKING = False  # (typing is imported by type checkers only: it costs milliseconds at import)
 
 from ._errors import DecodeError, EncodeError
-from . import _robowire
+
+try:
+    from . import _robowire
+except ImportError as _e:  # the sources in python/robowire, not the installed package
+    raise ImportError(f"robowire's compiled part is missing in {__path__[0]}: this is the source tree, not the "
+                      "installed package; run from another directory, or install it (docs/python.md)") from _e
 from . import buwizz3, navbot, osp  # noqa: E402 (after _robowire)
 
 if TYPE_CHECKING:
