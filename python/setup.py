@@ -66,4 +66,5 @@ class build_ext_and_stubs(build_ext):
             sys.path.remove(str(here))
 
 
-setup(ext_modules=[extension], cmdclass={"build_ext": build_ext_and_stubs})
+setup(packages=["robowire"], package_data={"robowire": ["py.typed", "*.pyi"]}, include_package_data=False,
+      ext_modules=[extension], cmdclass={"build_ext": build_ext_and_stubs})
