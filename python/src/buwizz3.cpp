@@ -201,7 +201,12 @@ void init_buwizz3(py::module_& m) {
             d["serial_low16"] = x.serial_low16;
             d["has_manufacturer_data"] = x.has_manufacturer_data;
             d["has_service_uuid"] = x.has_service_uuid;
-            d["local_name"] = x.local_name ? py::object(py::str(std::string(x.local_name->view()))) : py::object(py::none());
+            if (x.local_name) {
+                const auto n = x.local_name->view();  // any bytes: not necessarily UTF-8
+                d["local_name"] = steal(PyUnicode_DecodeUTF8(n.data(), static_cast<Py_ssize_t>(n.size()), "replace"));
+            } else {
+                d["local_name"] = py::none();
+            }
             return d;
         },
         py::arg("advertisement"), py::arg("scan_response") = py::none(),

@@ -133,3 +133,56 @@ def test_presets_encode():
     assert frame[:2] == b"\x53\x01" and frame[34:] == bytes([127, 2, 2, 0x14])
     assert frame[2:6] == bytes.fromhex("0000003F")  # 0.5f little-endian
     assert buwizz3.encode(buwizz3.default_current_limits()) == bytes.fromhex("38 32 32 32 32 64 64")
+
+
+def test_advertisement_by_hand():
+    # manufacturer data 4E 05 'B' 'W' 03 22 34 12: firmware 3.22, serial low 16 bits 0x1234
+    adv = bytes.fromhex("02 01 06 09 FF 4E 05 42 57 03 22 34 12")
+    # scan response: the service UUID on air (93 6E ... 05 50), and a name that is not UTF-8
+    scan = bytes.fromhex("11 07 93 6E 67 B1 19 99 B3 88 81 44 FB 74 D1 92 05 50") + bytes([4, 0x09, 0x42, 0x57, 0xFF])
+    assert buwizz3.parse_advertisement(adv, scan) == {
+        "mode": "application", "firmware_version": (0x03, 0x22), "serial_low16": 0x1234,
+        "has_manufacturer_data": True, "has_service_uuid": True, "local_name": "BW\ufffd"}
+    # bootloader mode: 'B' 'L' instead of the version, serial 0
+    assert buwizz3.parse_advertisement(bytes.fromhex("09 FF 4E 05 42 57 42 4C 00 00"))["mode"] == "bootloader"
+    assert buwizz3.parse_advertisement(bytes.fromhex("02 01 06")) is None
+    assert navbot.matches_advertisement(b"\x0f\x09navbot_es02-1A") and not navbot.matches_advertisement(b"\x05\x09abcd")
+    assert navbot.is_navbot_name("navbot_es02-7F") and not navbot.is_navbot_name("navbot_es02-")
+
+
+def test_uuids_from_the_document():
+    # decisions.md: service 500592d1-..., characteristics substitute 2901, 8000, 3901..3904 for 92d1
+    tail = "-74fb-4481-88b3-9919b1676e93"
+    assert buwizz3.service_uuid == "500592d1" + tail
+    assert buwizz3.application_uuid == "50052901" + tail and buwizz3.bootloader_uuid == "50058000" + tail
+    assert [buwizz3.uart_characteristic(n) for n in (1, 4)] == ["50053901" + tail, "50053904" + tail]
+    assert navbot.service_uuid == "6e400011-b5a3-f393-e0a9-e50e24dcca9e"
+    assert (navbot.write_uuid[:8], navbot.notify_uuid[:8]) == ("6e400012", "6e400013")
+
+
+def test_unit_helpers_by_hand():
+    assert buwizz3.battery_volts(80) == pytest.approx(13.0) and buwizz3.battery_millivolts(80) == 13000
+    assert buwizz3.motor_amps(200) == pytest.approx(3.0) and buwizz3.motor_milliamps(200) == 3000
+    assert buwizz3.accel_count(-16) == -1 and buwizz3.accel_micro_g(2048) == 999424
+    assert buwizz3.accel_milli_g(2048) == pytest.approx(999.424) and buwizz3.accel_milli_g_rounded(-16) == -8
+    assert buwizz3.lpf_hz("hz_6_25") == 6.25 and buwizz3.lpf_hz(0b0010) == 50.0 and buwizz3.lpf_from_hz(100) == "hz_100"
+    # 100 / (T x 7.8125): 1 s -> 12.8 -> 13; 0.1 s -> 128
+    assert buwizz3.ramp_rate_from_seconds(1.0) == 13 and buwizz3.ramp_rate_from_seconds(0.1) == 128
+    assert buwizz3.ramp_seconds(0) == 0.0 and buwizz3.ramp_seconds(128) == pytest.approx(0.1)
+    assert buwizz3.current_limit_raw(1500) == 50 and buwizz3.current_limit_raw(1500, step_ma=35) == 43
+    assert buwizz3.current_limit_ma(100) == 3000.0
+    # K_LP = 1 - Ts / (Ts + 1 / (2 pi f)), Ts = 0.01 s; f = 10 Hz: 1 - 0.01 / (0.01 + 0.0159155) = 1 - 0.38587 = 0.61413
+    assert buwizz3.k_lp_from_cutoff(10.0) == pytest.approx(0.61413, abs=1e-5)
+    assert osp.volts(1234) == pytest.approx(12.34) and osp.millivolts(1234) == 12340
+    assert osp.millivolts(12600, osp.scale.published_firmware) == 12600
+    assert osp.volts(12600, scale=osp.scale.published_firmware) == pytest.approx(12.6)
+    assert osp.amps(-1500) == pytest.approx(-1.5) and osp.milliamps(-1500) == -1500
+    # SOC: 65535 = 100 % (document), 10000 = 100 % (published firmware); 32768 -> 5000.08 -> 5000 bp
+    assert osp.soc_percent(65535) == pytest.approx(100.0) and osp.soc_basis_points(32768) == 5000
+    assert osp.soc_percent(5000, osp.scale.published_firmware) == pytest.approx(50.0)
+    assert osp.soc_from_percent(100.0) == 65535 and osp.soc_from_basis_points(5000) == 32768
+    assert osp.voltage_from_millivolts(12345) == 1235  # rounded to 10 mV
+    # ARM-1 angle: 16384 = pi; 0xC000 is -16384 to the published firmware
+    assert osp.angle_to_radians(16384) == pytest.approx(3.141592653589793)
+    assert osp.angle_count(0xC000) == 0xC000 and osp.angle_count(0xC000, osp.scale.published_firmware) == -16384
+    assert osp.angle_from_radians(-3.141592653589793, osp.scale.published_firmware) == 0xC000
