@@ -84,10 +84,11 @@ def test_osp_monitor_over_pty(tmp_path):
     stop = threading.Event()
     device = threading.Thread(target=fake_battery, args=(b, stop), daemon=True)
     try:
-        for _ in range(100):
+        for _ in range(400):  # socat makes the two links
             if a.exists() and b.exists():
                 break
             time.sleep(0.05)
+        assert a.exists() and b.exists(), "socat made no pty pair"
         device.start()
         p = run_example("osp_battery_monitor.py", str(a), "--count", "4", "--interval", "2", timeout=30)
         assert p.returncode == 0, p.stderr
