@@ -168,7 +168,7 @@ void add_messages(json& messages, std::string_view direction = {}) {
     }(std::make_index_sequence<std::variant_size_v<V>>{});
 }
 
-// One protocol's entry: messages of the variants V... (direction names in the same order, or none).
+// One protocol's entry, around its messages (add_messages).
 inline json protocol_entry(std::string_view name, std::string_view summary, json messages) {
     return {{"name", name}, {"summary", summary}, {"messages", std::move(messages)}};
 }
