@@ -94,6 +94,10 @@ const protocol& osp_protocol();
 std::span<const protocol* const> protocols();
 const protocol* find_protocol(std::string_view name);
 
+// ---- list_json.cpp
+// `list --json`: every protocol's tables (or the one named) as one JSON document (tools/schema.hpp).
+std::string list_json(std::string_view protocol);
+
 // ---- more subcommands
 // Adds `robowire dissector <protocol> [--output DIR]` (dissector_command.cpp).
 // Other subcommands are added the same way: a function taking the app,

@@ -268,10 +268,11 @@ int main(int argc, char** argv) {
 
     // list
     std::string list_protocol;
-    bool list_fields = false;
+    bool list_fields = false, list_as_json = false;
     auto* list = app.add_subcommand("list", "every message: name, command byte(s), valid lengths; --fields: every field");
     list->add_option("protocol", list_protocol, "buwizz3, navbot or osp (default: all)")->check(CLI::IsMember(names));
     list->add_flag("--fields", list_fields, "each field: name, byte offset, wire type, valid values, unit, flag bits; records expanded");
+    list->add_flag("--json", list_as_json, "the tables as one JSON document, every field included (Python: robowire.schema())");
 
     // decode
     decode_options dec_opt;
@@ -341,6 +342,10 @@ int main(int argc, char** argv) {
     }
 
     if (list->parsed()) {
+        if (list_as_json) {
+            out_line(list_json(list_protocol));
+            return exit_ok;
+        }
         for (const protocol* p : protocols())
             if (list_protocol.empty() || list_protocol == p->name) std::fputs(p->list(list_fields).c_str(), stdout);
         return exit_ok;

@@ -1,0 +1,26 @@
+"""robowire.buwizz3: decode, encode and the helpers of the C++ library's buwizz3 headers.
+
+The API is described in docs/python.md; the generated stub buwizz3.pyi lists it.
+"""
+from __future__ import annotations
+
+TYPE_CHECKING = False  # (typing is imported by type checkers only: it costs milliseconds at import)
+
+from . import _robowire
+
+if TYPE_CHECKING:
+    from typing import Any
+
+_ext = _robowire.buwizz3
+globals().update({_n: getattr(_ext, _n) for _n in dir(_ext) if not _n.startswith("_")})
+
+
+def schema() -> dict[str, Any]:
+    """This protocol's entry of robowire.schema()."""
+    import json
+
+    entry: dict[str, Any] = json.loads(_robowire.schema_json("buwizz3"))["protocols"][0]
+    return entry
+
+
+__all__ = [_n for _n in dir(_ext) if not _n.startswith("_")] + ["schema"]

@@ -1,0 +1,216 @@
+// robowire.buwizz3: commands (host -> device) and notifications (device ->
+// host) from buwizz3::command and buwizz3::notification; units, UUIDs, the
+// advertisement parser.
+#include <robowire/buwizz3.hpp>
+
+#include <cstdio>
+
+#include "codec.hpp"
+#include "protocols.hpp"
+
+namespace rwpy {
+namespace {
+namespace bw = robowire::buwizz3;
+
+PyObject* protocol() {
+    static PyObject* p = interned("buwizz3");
+    return p;
+}
+
+std::string hex2(unsigned v) {
+    char b[8];
+    std::snprintf(b, sizeof b, "0x%02X", v & 0xFFu);
+    return b;
+}
+
+// The message of variant V whose command byte is `cmd`.
+struct candidate {
+    bool found = false;
+    bool fits = false;  // the length is within the message's min..max input
+    std::string name, lengths;
+};
+template <class V>
+candidate by_command(std::uint8_t cmd, std::size_t len) {
+    candidate c;
+    for_each_alternative<V>([&](auto t) {
+        using M = typename decltype(t)::type;
+        constexpr auto& tab = robowire::table_v<M>;
+        if (c.found || tab.fixed[0].value != cmd) return;
+        c = {true, len >= tab.min_size() && len <= tab.max_input(), std::string(tab.name), lengths_text<M>()};
+    });
+    return c;
+}
+
+enum class direction { any, command, notification };
+
+py::dict decode_as(std::span<const std::uint8_t> in, direction d, std::string_view extra = {}) {
+    if (d == direction::command) {
+        const auto r = bw::decode_command(in);
+        if (!r) raise_decode<bw::command>(in, r.error(), {}, extra);
+        return variant_dict(protocol(), *r);
+    }
+    const auto r = bw::decode_notification(in);
+    if (!r) raise_decode<bw::notification>(in, r.error(), {}, extra);
+    return variant_dict(protocol(), *r);
+}
+
+// The direction as the command-line tool works it out: given, or by the
+// command byte, or (0x23, 0xAC) by the length.
+py::dict decode(py::handle data, py::handle dir) {
+    byte_input bytes(data);
+    const auto in = bytes.span();
+    direction d = direction::any;
+    if (!dir.is_none()) {
+        const auto s = PyUnicode_Check(dir.ptr()) ? dir.cast<std::string>() : std::string();
+        if (s == "command") d = direction::command;
+        else if (s == "notification") d = direction::notification;
+        else throw py::value_error("direction: 'command', 'notification' or None, got " + py::repr(dir).cast<std::string>());
+    }
+    if (in.empty()) return decode_as(in, d == direction::any ? direction::command : d);
+    const auto c = by_command<bw::command>(in[0], in.size());
+    const auto n = by_command<bw::notification>(in[0], in.size());
+    if (d == direction::command)
+        return decode_as(in, d, !c.found && n.found ? " (" + hex2(in[0]) + " is the notification " + n.name + ")" : "");
+    if (d == direction::notification)
+        return decode_as(in, d, !n.found && c.found ? " (" + hex2(in[0]) + " is the command " + c.name + ")" : "");
+    if (c.found && !n.found) return decode_as(in, direction::command);
+    if (n.found && !c.found) return decode_as(in, direction::notification);
+    if (!c.found && !n.found)
+        raise(classes().decode, "unknown message at byte 0: " + hex2(in[0]) + " is no BuWizz3 command or notification",
+              robowire::errc::unknown_message, 0, {}, {});
+    if (c.fits && !n.fits) return decode_as(in, direction::command);
+    if (n.fits && !c.fits) return decode_as(in, direction::notification);
+    const std::string which = hex2(in[0]) + " is the command " + c.name + " (" + c.lengths + ") and the notification " + n.name +
+                              " (" + n.lengths + "); " + std::to_string(in.size()) + (in.size() == 1 ? " byte" : " bytes") + " given";
+    if (c.fits && n.fits) throw py::value_error(which + ": pass direction='command' or direction='notification'");
+    return decode_as(in, direction::command, " (" + which + ")");
+}
+
+py::bytes encode(py::handle message, py::kwargs fields) {
+    const auto r = encode_args("buwizz3", message, fields);
+    py::bytes out;
+    if (encode_named<bw::command>(r.name, r.fields, r.from_dict, out)) return out;
+    if (encode_named<bw::notification>(r.name, r.fields, r.from_dict, out)) return out;
+    throw py::key_error("unknown message " + r.name + " of buwizz3 (commands: " + message_names<bw::command>() +
+                        "; notifications: " + message_names<bw::notification>() + ")");
+}
+
+template <class T>
+T value_or_raise(const robowire::result<T>& r, std::string_view what) {
+    if (!r) raise(classes().encode, std::string(what) + ": " + std::string(robowire::to_string(r.code())), r.code(), r.error().offset, {}, {});
+    return *r;
+}
+
+bw::lpf_setting lpf_of(py::handle setting) {
+    if (PyUnicode_Check(setting.ptr())) {
+        if (const auto e = robowire::enum_from_name<bw::lpf_setting>(setting.cast<std::string>())) return *e;
+    } else if (PyLong_Check(setting.ptr())) {
+        const long v = setting.cast<long>();
+        if (v >= 0 && v <= 255 && robowire::is_valid_enum(static_cast<bw::lpf_setting>(v))) return static_cast<bw::lpf_setting>(v);
+    } else {
+        throw py::type_error("setting: a name such as 'hz_50' or a code");
+    }
+    raise(classes().encode, "lpf_hz: value is not a valid code", robowire::errc::invalid_enum, 1, {}, {});
+}
+
+std::string uuid_text(const robowire::uuid128& u) {
+    const auto c = u.to_chars();
+    return {c.data(), c.size()};
+}
+
+}  // namespace
+
+void init_buwizz3(py::module_& m) {
+    m.def("decode", &decode, py::arg("data"), py::arg("direction") = py::none(),
+          "Decodes a command or a notification into a dict (the command-line tool's JSON line).");
+    m.def("encode", &encode, py::arg("message"),
+          "encode(name, **fields) or encode(dict as decode returns it) -> bytes.");
+
+    // units (status report)
+    m.def("battery_volts", [](std::uint8_t raw) { return bw::battery_volts(raw); }, py::arg("raw"));
+    m.def("motor_amps", [](std::uint8_t raw) { return bw::motor_amps(raw); }, py::arg("raw"));
+    m.def("accel_count", [](std::int16_t word) { return bw::accel_count(word); }, py::arg("word"));
+    m.def("accel_milli_g", [](std::int16_t word) { return bw::accel_milli_g(word); }, py::arg("word"));
+    m.def("battery_millivolts", [](std::uint8_t raw) { return bw::battery_millivolts(raw); }, py::arg("raw"));
+    m.def("motor_milliamps", [](std::uint8_t raw) { return bw::motor_milliamps(raw); }, py::arg("raw"));
+    m.def("accel_micro_g", [](std::int16_t word) { return bw::accel_micro_g(word); }, py::arg("word"));
+    m.def("accel_milli_g_rounded", [](std::int16_t word) { return bw::accel_milli_g_rounded(word); }, py::arg("word"));
+    // units (commands)
+    m.def("lpf_hz", [](py::handle s) { return bw::lpf_hz(lpf_of(s)); }, py::arg("setting"));
+    m.def("lpf_from_hz", [](double hz) { return std::string(robowire::enum_name(value_or_raise(bw::lpf_from_hz(hz), "lpf_from_hz"))); },
+          py::arg("hz"));
+    m.def("ramp_rate_from_seconds", [](double s) { return value_or_raise(bw::ramp_rate_from_seconds(s), "ramp_rate_from_seconds"); },
+          py::arg("seconds"));
+    m.def("ramp_seconds", [](std::uint8_t rate) { return bw::ramp_seconds(rate); }, py::arg("rate"));
+    m.def("current_limit_raw",
+          [](double ma, double step) { return value_or_raise(bw::current_limit_raw(ma, step), "current_limit_raw"); },
+          py::arg("milliamps"), py::arg("step_ma") = bw::default_current_step_ma);
+    m.def("current_limit_ma", [](std::uint8_t raw, double step) { return bw::current_limit_ma(raw, step); }, py::arg("raw"),
+          py::arg("step_ma") = bw::default_current_step_ma);
+    m.def("k_lp_from_cutoff", [](double f) { return value_or_raise(bw::k_lp_from_cutoff(f), "k_lp_from_cutoff"); }, py::arg("hz"));
+    m.attr("default_current_step_ma") = bw::default_current_step_ma;
+    m.def("position_servo_preset", [](std::uint8_t port) { return message_dict(protocol(), bw::position_servo_preset(port)); },
+          py::arg("port"));
+    m.def("speed_servo_preset", [](std::uint8_t port) { return message_dict(protocol(), bw::speed_servo_preset(port)); },
+          py::arg("port"));
+    m.def("generic_pid_preset",
+          [](std::uint8_t port, py::handle mode) {
+              bw::port_function f{};
+              if (PyUnicode_Check(mode.ptr())) {
+                  const auto e = robowire::enum_from_name<bw::port_function>(mode.cast<std::string>());
+                  if (!e) raise(classes().encode, "generic_pid_preset: value is not a valid code", robowire::errc::invalid_enum, 37, {}, {});
+                  f = *e;
+              } else {
+                  const long v = mode.cast<long>();
+                  if (v < 0 || v > 255 || !robowire::is_valid_enum(static_cast<bw::port_function>(v)))
+                      raise(classes().encode, "generic_pid_preset: value is not a valid code", robowire::errc::invalid_enum, 37, {}, {});
+                  f = static_cast<bw::port_function>(v);
+              }
+              return message_dict(protocol(), bw::generic_pid_preset(port, f));
+          },
+          py::arg("port"), py::arg("mode"));
+    m.def("default_current_limits", [] { return message_dict(protocol(), bw::default_current_limits); });
+
+    // UUIDs
+    m.attr("service_uuid") = uuid_text(bw::service_uuid);
+    m.attr("application_uuid") = uuid_text(bw::application_uuid);
+    m.attr("bootloader_uuid") = uuid_text(bw::bootloader_uuid);
+    m.def("uart_characteristic", [](int n) { return uuid_text(value_or_raise(bw::uart_characteristic(n), "uart_characteristic")); },
+          py::arg("port"));
+
+    // advertisement
+    m.def(
+        "parse_advertisement",
+        [](py::handle adv, py::handle scan_response) -> py::object {
+            byte_input a(adv);
+            std::optional<byte_input> s;
+            if (!scan_response.is_none()) s.emplace(scan_response);
+            const auto r = bw::parse_advertisement(a.span(), s ? s->span() : std::span<const std::uint8_t>{});
+            if (!r) {
+                const auto e = r.error();
+                raise(classes().decode,
+                      "advertisement: " + std::string(robowire::to_string(e.code)) + " at byte " + std::to_string(e.offset), e.code, e.offset,
+                      {}, {});
+            }
+            if (!*r) return py::none();
+            const auto& x = **r;
+            static constexpr const char* modes[] = {"unknown", "application", "bootloader"};
+            py::dict d;
+            d["mode"] = modes[static_cast<int>(x.mode)];
+            d["firmware_version"] = py::make_tuple(x.firmware_version[0], x.firmware_version[1]);
+            d["serial_low16"] = x.serial_low16;
+            d["has_manufacturer_data"] = x.has_manufacturer_data;
+            d["has_service_uuid"] = x.has_service_uuid;
+            if (x.local_name) {
+                const auto n = x.local_name->view();  // any bytes: not necessarily UTF-8
+                d["local_name"] = steal(PyUnicode_DecodeUTF8(n.data(), static_cast<Py_ssize_t>(n.size()), "replace"));
+            } else {
+                d["local_name"] = py::none();
+            }
+            return d;
+        },
+        py::arg("advertisement"), py::arg("scan_response") = py::none(),
+        "A BuWizz3's advertisement (and scan response) as a dict, or None when it is not a BuWizz3.");
+}
+
+}  // namespace rwpy

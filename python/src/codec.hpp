@@ -1,0 +1,685 @@
+// Templates over the library's tables that turn a message into a Python dict
+// (the shape of the command-line tool's JSON line) and a dict back into a
+// message. Nothing here names a message: every protocol module calls these
+// for the alternatives of its std::variant, so a message added to a
+// protocol appears in Python with no change to the binding.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <robowire/core/fields.hpp>
+#include <robowire/core/flag_bits.hpp>
+#include <robowire/core/table.hpp>
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "schema.hpp"
+
+namespace rwpy {
+
+namespace py = pybind11;
+using robowire::errc;
+using robowire::wire_kind;
+
+// ---------------------------------------------------------------- Python objects
+// A new reference as a py::object.
+inline py::object steal(PyObject* o) {
+    if (!o) throw py::error_already_set();
+    return py::reinterpret_steal<py::object>(o);
+}
+// An interned str that lives as long as the process (kept in caches).
+inline PyObject* interned(std::string_view s) {
+    PyObject* o = PyUnicode_FromStringAndSize(s.data(), static_cast<Py_ssize_t>(s.size()));
+    if (!o) throw py::error_already_set();
+    PyUnicode_InternInPlace(&o);
+    return o;
+}
+inline py::str str_of(std::string_view s) { return py::reinterpret_steal<py::str>(interned(s)); }
+// d[key] = value (value is stolen).
+inline void set_item(PyObject* d, PyObject* key, PyObject* value) {
+    if (!value) throw py::error_already_set();
+    const int rc = PyDict_SetItem(d, key, value);
+    Py_DECREF(value);
+    if (rc != 0) throw py::error_already_set();
+}
+
+// "01 6D 50", as the command-line tool prints bytes.
+inline std::string hex_of(std::span<const std::uint8_t> b) {
+    static constexpr char digits[] = "0123456789ABCDEF";
+    std::string s;
+    s.reserve(b.size() * 3);
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        if (i) s += ' ';
+        s += digits[b[i] >> 4];
+        s += digits[b[i] & 15];
+    }
+    return s;
+}
+
+// Rounded to 15 significant digits, as the command-line tool does (13.000000000000002 -> 13).
+inline double tidy(double v) {
+    if (!std::isfinite(v)) return v;
+    char b[40];
+    const auto r = std::to_chars(b, b + sizeof b, v, std::chars_format::general, 15);
+    double out = v;
+    std::from_chars(b, r.ptr, out);
+    return out;
+}
+
+// ---------------------------------------------------------------- errors
+// The Python classes robowire.DecodeError and robowire.EncodeError (module init sets them).
+struct error_classes {
+    PyObject* decode = nullptr;
+    PyObject* encode = nullptr;
+};
+inline error_classes& classes() {
+    static error_classes c;
+    return c;
+}
+
+// Raises cls(text, code, offset, field, message, notes).
+[[noreturn]] inline void raise(PyObject* cls, std::string_view text, std::optional<errc> code, std::size_t offset,
+                               std::string_view field, std::string_view message, const std::vector<std::string>& notes = {}) {
+    py::list n;
+    for (const auto& s : notes) n.append(py::str(s));
+    py::object inst = py::reinterpret_borrow<py::object>(cls)(
+        py::str(std::string(text)), code ? py::object(py::str(std::string(robowire::schema::errc_name(*code)))) : py::object(py::none()),
+        py::int_(offset), field.empty() ? py::object(py::none()) : py::object(py::str(std::string(field))),
+        message.empty() ? py::object(py::none()) : py::object(py::str(std::string(message))), n);
+    PyErr_SetObject(cls, inst.ptr());
+    throw py::error_already_set();
+}
+
+// describe_error's line for an error of message M.
+template <class M>
+std::string describe(const robowire::error& e) {
+    char buf[160];
+    const auto s = robowire::describe_error<M>(e, buf);
+    return std::string(s);
+}
+// Raises DecodeError / EncodeError for error e of message M.
+template <class M>
+[[noreturn]] void raise_for(PyObject* cls, const robowire::error& e, const std::vector<std::string>& notes = {},
+                            std::string_view extra = {}) {
+    const bool length = e.code == errc::too_short || e.code == errc::too_long;
+    const auto f = robowire::field_at<M>(e);
+    raise(cls, describe<M>(e) + std::string(extra), e.code, e.offset, length ? std::string_view{} : f.name,
+          robowire::table_v<M>.name, notes);
+}
+
+// ---------------------------------------------------------------- per-message caches
+template <class F>
+using element_t = typename F::element_type;
+
+// Flag bits [lo, lo+width) of a flag byte: its name and its values' names.
+struct flag_key {
+    std::uint8_t lo, width;
+    PyObject* name;
+    std::array<PyObject*, 4> values;  // nullptr: unnamed
+};
+// A field's dict keys (its name, its physical value's, its flag bits') and flag bits.
+struct field_keys {
+    PyObject* name;
+    PyObject* physical;
+    PyObject* bits;
+    std::vector<flag_key> flags;
+    PyObject* unit = nullptr;    // the unit's name (fields with a unit)
+    bool exact = false;          // physical = raw (scale 1, offset 0): no rounding needed
+    std::vector<double> by_byte; // one-byte fields: the physical value of each raw byte, worked out once
+};
+
+template <class M>
+const std::vector<field_keys>& keys_of() {
+    static const auto* keys = [] {
+        auto* v = new std::vector<field_keys>;  // kept for the process (no destructor after Python is gone)
+        robowire::for_each_field<M>([&](const auto& f) {
+            std::string n(f.name), phys;
+            if (n.size() > 4 && n.compare(n.size() - 4, 4, "_raw") == 0) phys = n.substr(0, n.size() - 4);
+            else phys = n + "_physical";
+            field_keys k{interned(n), interned(phys), interned(n + "_bits"), {}, nullptr, false, {}};
+            using F = std::remove_cvref_t<decltype(f)>;
+            using E = element_t<F>;
+            if (!f.unit.name.empty()) {
+                k.unit = interned(f.unit.name);
+                k.exact = f.unit.scale == 1.0 && f.unit.offset == 0.0;
+                if constexpr (std::is_integral_v<E> && !std::is_same_v<E, bool> && sizeof(E) == 1) {
+                    if (!k.exact) {
+                        k.by_byte.resize(256);
+                        for (unsigned b = 0; b < 256; ++b) {
+                            const auto raw = static_cast<E>(static_cast<std::uint8_t>(b));
+                            k.by_byte[b] = tidy(static_cast<double>(raw) * f.unit.scale + f.unit.offset);
+                        }
+                    }
+                }
+            }
+            if constexpr (robowire::has_flag_bits<M>) {
+                for (const auto& b : robowire::flag_bits_v<M>) {
+                    if (b.field != f.name) continue;
+                    flag_key fk{b.lo, b.width, interned(b.name), {}};
+                    for (std::size_t i = 0; i < 4; ++i)
+                        fk.values[i] = b.width > 1 && i < (1u << b.width) && !b.values[i].empty() ? interned(b.values[i]) : nullptr;
+                    k.flags.push_back(fk);
+                }
+            }
+            v->push_back(std::move(k));
+        });
+        return v;
+    }();
+    return *keys;
+}
+
+// Enum names as Python strings, by code.
+template <class E>
+PyObject* enum_str(E e) {
+    static const auto* names = [] {
+        auto* v = new std::vector<std::pair<E, PyObject*>>;
+        for (const auto& entry : robowire::enum_table_v<E>) v->emplace_back(entry.value, interned(entry.name));
+        return v;
+    }();
+    for (const auto& [code, s] : *names)
+        if (code == e) {
+            Py_INCREF(s);
+            return s;
+        }
+    return PyLong_FromLong(static_cast<long>(e));  // not reached after a decode
+}
+
+inline PyObject* unit_key() {
+    static PyObject* k = interned("unit");
+    return k;
+}
+inline PyObject* value_key() {
+    static PyObject* k = interned("value");
+    return k;
+}
+
+// ---------------------------------------------------------------- message -> dict
+template <class M>
+PyObject* fields_dict(const M& m);
+
+// One element as a new reference.
+template <class F, class E>
+PyObject* element_py(const E& v) {
+    if constexpr (F::kind == wire_kind::record) {
+        return fields_dict(v);
+    } else if constexpr (std::is_same_v<E, bool>) {
+        return PyBool_FromLong(v ? 1 : 0);
+    } else if constexpr (std::is_enum_v<E>) {
+        return enum_str(v);
+    } else if constexpr (std::is_floating_point_v<E>) {
+        return PyFloat_FromDouble(static_cast<double>(v));
+    } else if constexpr (std::is_integral_v<E>) {
+        return PyLong_FromLongLong(static_cast<long long>(v));
+    } else if constexpr (requires { v.view(); }) {  // text
+        const auto s = v.view();
+        return PyUnicode_DecodeUTF8(s.data(), static_cast<Py_ssize_t>(s.size()), "surrogateescape");
+    } else {  // a byte tail, as the tool's hex
+        const std::string h = hex_of(v.span());
+        return PyUnicode_FromStringAndSize(h.data(), static_cast<Py_ssize_t>(h.size()));
+    }
+}
+
+// The physical value of raw value v of a field with a unit, rounded as the tool rounds it.
+template <class F, class E>
+double physical_of(const field_keys& k, const F& f, E v) {
+    if (k.exact) return static_cast<double>(v);
+    if constexpr (sizeof(E) == 1) return k.by_byte[static_cast<std::uint8_t>(v)];
+    else return tidy(static_cast<double>(v) * f.unit.scale + f.unit.offset);
+}
+
+template <class F>
+constexpr bool has_physical() {
+    using E = element_t<F>;
+    return std::is_integral_v<E> && !std::is_same_v<E, bool> && !std::is_enum_v<E>;
+}
+
+template <class M>
+PyObject* fields_dict(const M& m) {
+    PyObject* d = PyDict_New();
+    if (!d) throw py::error_already_set();
+    py::object owner = py::reinterpret_steal<py::object>(d);
+    const auto& keys = keys_of<M>();
+    std::size_t index = 0;
+    robowire::for_each_field<M>([&](const auto& f) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        using E = element_t<F>;
+        const field_keys& k = keys[index++];
+        const auto& member = m.*(f.member);
+        const auto* value = [&]() {
+            if constexpr (F::is_optional) return member ? &*member : nullptr;
+            else return &member;
+        }();
+        if (!value) {
+            Py_INCREF(Py_None);
+            set_item(d, k.name, Py_None);
+            return;
+        }
+        const bool with_unit = !f.unit.name.empty();
+        if constexpr (F::is_array) {
+            PyObject* list = PyList_New(static_cast<Py_ssize_t>(F::count));
+            if (!list) throw py::error_already_set();
+            for (std::size_t i = 0; i < F::count; ++i) {
+                PyObject* e = element_py<F>((*value)[i]);
+                if (!e) {
+                    Py_DECREF(list);
+                    throw py::error_already_set();
+                }
+                PyList_SET_ITEM(list, static_cast<Py_ssize_t>(i), e);
+            }
+            set_item(d, k.name, list);
+            if constexpr (has_physical<F>()) {
+                if (with_unit) {
+                    PyObject* phys = PyList_New(static_cast<Py_ssize_t>(F::count));
+                    if (!phys) throw py::error_already_set();
+                    for (std::size_t i = 0; i < F::count; ++i)
+                        PyList_SET_ITEM(phys, static_cast<Py_ssize_t>(i), PyFloat_FromDouble(physical_of(k, f, (*value)[i])));
+                    PyObject* pd = PyDict_New();
+                    set_item(pd, value_key(), phys);
+                    Py_INCREF(k.unit);
+                    set_item(pd, unit_key(), k.unit);
+                    set_item(d, k.physical, pd);
+                }
+            }
+        } else {
+            set_item(d, k.name, element_py<F>(*value));
+            if constexpr (has_physical<F>()) {
+                if (with_unit) {
+                    PyObject* pd = PyDict_New();
+                    set_item(pd, value_key(), PyFloat_FromDouble(physical_of(k, f, *value)));
+                    Py_INCREF(k.unit);
+                    set_item(pd, unit_key(), k.unit);
+                    set_item(d, k.physical, pd);
+                }
+                if constexpr (robowire::has_flag_bits<M>) {
+                    const auto& bits = k.flags;
+                    if (!bits.empty()) {
+                        PyObject* bd = PyDict_New();
+                        if (!bd) throw py::error_already_set();
+                        const auto raw = static_cast<unsigned>(static_cast<std::make_unsigned_t<E>>(*value));
+                        for (const auto& b : bits) {
+                            const unsigned v = (raw >> b.lo) & ((1u << b.width) - 1u);
+                            if (b.width == 1) {
+                                set_item(bd, b.name, PyBool_FromLong(v ? 1 : 0));
+                            } else if (v < 4 && b.values[v]) {
+                                Py_INCREF(b.values[v]);
+                                set_item(bd, b.name, b.values[v]);
+                            } else {
+                                set_item(bd, b.name, PyUnicode_FromString(std::to_string(v).c_str()));
+                            }
+                        }
+                        set_item(d, k.bits, bd);
+                    }
+                }
+            }
+        }
+    });
+    return owner.release().ptr();
+}
+
+// {"type": "message", "protocol": ..., "message": ..., "fields": {...}}
+template <class M>
+py::dict message_dict(PyObject* protocol, const M& m) {
+    static PyObject* type_key = interned("type");
+    static PyObject* message_value = interned("message");
+    static PyObject* protocol_key = interned("protocol");
+    static PyObject* message_key = interned("message");
+    static PyObject* fields_key = interned("fields");
+    static PyObject* name = interned(robowire::table_v<M>.name);
+    py::dict d;
+    PyObject* p = d.ptr();
+    Py_INCREF(message_value);
+    set_item(p, type_key, message_value);
+    Py_INCREF(protocol);
+    set_item(p, protocol_key, protocol);
+    Py_INCREF(name);
+    set_item(p, message_key, name);
+    set_item(p, fields_key, fields_dict(m));
+    return d;
+}
+template <class V>
+py::dict variant_dict(PyObject* protocol, const V& v) {
+    return std::visit([&](const auto& m) { return message_dict(protocol, m); }, v);
+}
+
+// ---------------------------------------------------------------- dict -> message
+// Where a value goes, for messages only (built into text on an error):
+// "set_led_status" . "colors" [1] . "g".
+struct path {
+    const path* parent = nullptr;
+    std::string_view name{};
+    std::size_t index = static_cast<std::size_t>(-1);  // array element, or none
+    std::string str() const {
+        std::string s = parent ? parent->str() + "." : std::string();
+        s += name;
+        if (index != static_cast<std::size_t>(-1)) s += "[" + std::to_string(index) + "]";
+        return s;
+    }
+};
+
+inline std::string type_name(PyObject* o) { return Py_TYPE(o)->tp_name; }
+
+// Raises EncodeError for a value of field f that cannot be encoded, in
+// describe_error's format ("maneuver.pitch: value out of range (valid
+// -100..100 %) at byte 7"); `path` without the array indices names the field
+// ("set_led_status.colors.g" inside a record).
+template <class Top, class F>
+[[noreturn]] void field_error(const F& f, const std::string& path, errc code, std::size_t offset) {
+    std::string name;
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        if (path[i] == '[') i = path.find(']', i);
+        else name += path[i];
+    }
+    std::string text = name + ": " + std::string(robowire::to_string(code));
+    if (code == errc::value_out_of_range) {
+        using E = element_t<F>;
+        if constexpr (F::kind == wire_kind::text) {
+            text += " (valid up to " + std::to_string(E::capacity()) + " bytes)";
+        } else if constexpr (std::is_floating_point_v<E>) {
+            text += " (valid a 32-bit float)";
+        } else if constexpr (std::is_integral_v<E>) {
+            text += " (valid " + std::to_string(f.valid.min) + ".." + std::to_string(f.valid.max);
+            if (!f.unit.name.empty()) text += f.unit.raw_is_physical ? " " + std::string(f.unit.name) : std::string(" raw");
+            text += ")";
+        }
+    }
+    text += " at byte " + std::to_string(offset);
+    const auto dot = name.find('.');
+    raise(classes().encode, text, code, offset, dot == std::string::npos ? std::string_view{} : std::string_view(name).substr(dot + 1),
+          robowire::table_v<Top>.name);
+}
+
+template <class Top, class M>
+void fill(M& m, PyObject* dict, std::size_t base, const path* parent, bool ignore_derived);
+
+// Reads one element from `o` into v.
+template <class Top, class F, class E>
+void read_element(const F& f, E& v, PyObject* o, const path& at, std::size_t offset, bool ignore_derived) {
+    if constexpr (F::kind == wire_kind::record) {
+        if (!PyDict_Check(o)) throw py::type_error(at.str() + ": expected a dict of " + std::string(robowire::table_v<E>.name) +
+                                                   " fields, got " + type_name(o));
+        fill<Top>(v, o, offset, &at, ignore_derived);
+    } else if constexpr (std::is_same_v<E, bool>) {
+        if (!PyLong_Check(o)) throw py::type_error(at.str() + ": expected a bool, got " + type_name(o));
+        const long x = PyLong_AsLong(o);
+        if (x == -1 && PyErr_Occurred()) PyErr_Clear();
+        if (x != 0 && x != 1) field_error<Top>(f, at.str(), errc::value_out_of_range, offset);
+        v = x == 1;
+    } else if constexpr (std::is_enum_v<E>) {
+        if (PyUnicode_Check(o)) {
+            Py_ssize_t n = 0;
+            const char* s = PyUnicode_AsUTF8AndSize(o, &n);
+            if (!s) throw py::error_already_set();
+            const auto e = robowire::enum_from_name<E>(std::string_view(s, static_cast<std::size_t>(n)));
+            if (!e) field_error<Top>(f, at.str(), errc::invalid_enum, offset);
+            v = *e;
+        } else if (PyLong_Check(o)) {
+            int overflow = 0;
+            const long long x = PyLong_AsLongLongAndOverflow(o, &overflow);
+            using U = std::underlying_type_t<E>;
+            if (overflow || x < std::numeric_limits<U>::min() || x > std::numeric_limits<U>::max() ||
+                !robowire::is_valid_enum(static_cast<E>(static_cast<U>(x))))
+                field_error<Top>(f, at.str(), errc::invalid_enum, offset);
+            v = static_cast<E>(static_cast<U>(x));
+        } else {
+            throw py::type_error(at.str() + ": expected a name (str) or code (int), got " + type_name(o));
+        }
+    } else if constexpr (std::is_floating_point_v<E>) {
+        if (!PyFloat_Check(o) && !PyLong_Check(o)) throw py::type_error(at.str() + ": expected a float, got " + type_name(o));
+        const double x = PyFloat_AsDouble(o);
+        if (x == -1.0 && PyErr_Occurred()) {  // an int too large for a double
+            PyErr_Clear();
+            field_error<Top>(f, at.str(), errc::value_out_of_range, offset);
+        }
+        if (std::isfinite(x) && std::fabs(x) > static_cast<double>(std::numeric_limits<E>::max()))
+            field_error<Top>(f, at.str(), errc::value_out_of_range, offset);
+        v = static_cast<E>(x);
+    } else if constexpr (std::is_integral_v<E>) {
+        if (!PyLong_Check(o)) throw py::type_error(at.str() + ": expected an int, got " + type_name(o));
+        int overflow = 0;
+        const long long x = PyLong_AsLongLongAndOverflow(o, &overflow);
+        if (x == -1 && PyErr_Occurred()) throw py::error_already_set();
+        if (overflow || x < f.valid.min || x > f.valid.max || !std::in_range<E>(x))
+            field_error<Top>(f, at.str(), errc::value_out_of_range, offset);
+        v = static_cast<E>(x);
+    } else if constexpr (requires { v.view(); }) {  // text
+        if (!PyUnicode_Check(o)) throw py::type_error(at.str() + ": expected a str, got " + type_name(o));
+        py::object utf8 = steal(PyUnicode_AsEncodedString(o, "utf-8", "surrogateescape"));
+        const std::string_view s(PyBytes_AS_STRING(utf8.ptr()), static_cast<std::size_t>(PyBytes_GET_SIZE(utf8.ptr())));
+        const auto t = E::make(s);
+        if (!t) field_error<Top>(f, at.str(), errc::value_out_of_range, offset);
+        v = *t;
+    } else {  // a byte tail: bytes-like, or hex text as decode gives it
+        py::object raw;
+        if (PyUnicode_Check(o)) {
+            static PyObject* fromhex = PyObject_GetAttrString(reinterpret_cast<PyObject*>(&PyBytes_Type), "fromhex");
+            PyObject* b = PyObject_CallOneArg(fromhex, o);
+            if (!b) {
+                PyErr_Clear();
+                throw py::value_error(at.str() + ": not hex bytes: " + py::str(o).cast<std::string>());
+            }
+            raw = steal(b);
+        } else if (PyObject_CheckBuffer(o)) {
+            raw = steal(PyBytes_FromObject(o));
+        } else {
+            throw py::type_error(at.str() + ": expected bytes or hex text, got " + type_name(o));
+        }
+        const auto* p = reinterpret_cast<const std::uint8_t*>(PyBytes_AS_STRING(raw.ptr()));
+        const auto x = E::from(std::span<const std::uint8_t>(p, static_cast<std::size_t>(PyBytes_GET_SIZE(raw.ptr()))));
+        if (!x) field_error<Top>(f, at.str(), errc::capacity_exceeded, offset);
+        v = *x;
+    }
+}
+
+// Reads field f (an array: a list or tuple of exactly its count).
+template <class Top, class F, class T>
+void read_field(const F& f, T& value, PyObject* o, std::size_t base, const path& at, bool ignore_derived) {
+    if constexpr (F::is_array) {
+        if (!PyList_Check(o) && !PyTuple_Check(o))
+            throw py::type_error(at.str() + ": expected a list of " + std::to_string(F::count) + " values, got " + type_name(o));
+        const auto n = static_cast<std::size_t>(PySequence_Fast_GET_SIZE(o));
+        if (n != F::count)
+            throw py::value_error(at.str() + ": " + std::to_string(n) + (n == 1 ? " value" : " values") + " given, " +
+                                  std::to_string(F::count) + " expected");
+        PyObject** items = PySequence_Fast_ITEMS(o);
+        for (std::size_t i = 0; i < F::count; ++i)
+            read_element<Top>(f, value[i], items[i], path{at.parent, at.name, i}, base + f.offset + i * F::element_size, ignore_derived);
+    } else {
+        read_element<Top>(f, value, o, at, base + f.offset, ignore_derived);
+    }
+}
+
+// Is `key` one that decode adds beside field f (its physical value, flag bits, payload text)?
+template <class M>
+bool derived_key(std::string_view key) {
+    const auto& keys = keys_of<M>();
+    for (const auto& k : keys) {
+        for (PyObject* s : {k.physical, k.bits}) {
+            Py_ssize_t n = 0;
+            const char* c = PyUnicode_AsUTF8AndSize(s, &n);
+            if (c && key == std::string_view(c, static_cast<std::size_t>(n))) return true;
+        }
+        Py_ssize_t n = 0;
+        const char* c = PyUnicode_AsUTF8AndSize(k.name, &n);
+        if (c && key == std::string(c, static_cast<std::size_t>(n)) + "_text") return true;
+    }
+    return false;
+}
+
+template <class M>
+std::string field_names() {
+    std::string names;
+    robowire::for_each_field<M>([&](const auto& f) { names += (names.empty() ? "" : ", ") + std::string(f.name); });
+    return names.empty() ? "none" : names;
+}
+
+// Sets M's fields from the dict's entries; fields not given keep M's defaults.
+template <class Top, class M>
+void fill(M& m, PyObject* dict, std::size_t base, const path* parent, bool ignore_derived) {
+    PyObject *key = nullptr, *value = nullptr;
+    Py_ssize_t pos = 0;
+    while (PyDict_Next(dict, &pos, &key, &value)) {
+        if (!PyUnicode_Check(key)) throw py::type_error(parent->str() + ": field names are str, got " + type_name(key));
+        Py_ssize_t n = 0;
+        const char* c = PyUnicode_AsUTF8AndSize(key, &n);
+        if (!c) throw py::error_already_set();
+        const std::string_view name(c, static_cast<std::size_t>(n));
+        bool found = false;
+        robowire::for_each_field<M>([&](const auto& f) {
+            using F = std::remove_cvref_t<decltype(f)>;
+            if (found || f.name != name) return;
+            found = true;
+            auto& member = m.*(f.member);
+            const path at{parent, f.name};
+            if constexpr (F::is_optional) {
+                if (value == Py_None) member.reset();
+                else read_field<Top>(f, member.emplace(), value, base, at, ignore_derived);
+            } else {
+                read_field<Top>(f, member, value, base, at, ignore_derived);
+            }
+        });
+        if (found) continue;
+        if (ignore_derived && derived_key<M>(name)) continue;
+        std::string what = "unknown field " + parent->str() + "." + std::string(name) + " (fields of " + std::string(robowire::table_v<M>.name) +
+                           ": " + field_names<M>() + ")";
+        if (!ignore_derived && derived_key<M>(name)) what += "; decode adds it beside the raw value, encode takes the raw value";
+        throw py::key_error(what);
+    }
+}
+
+// Encodes message M from a dict of fields.
+template <class M>
+py::bytes encode_fields(PyObject* fields, bool ignore_derived) {
+    M m{};
+    const path root{nullptr, robowire::table_v<M>.name};
+    if (fields) fill<M>(m, fields, 0, &root, ignore_derived);
+    const auto r = robowire::encode(m);
+    if (!r) raise_for<M>(classes().encode, r.error());
+    return py::bytes(reinterpret_cast<const char*>(r->data()), r->size());
+}
+
+// ---------------------------------------------------------------- variants
+template <class V, class Fn>
+void for_each_alternative(Fn&& fn) {
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        (fn(std::type_identity<std::variant_alternative_t<I, V>>{}), ...);
+    }(std::make_index_sequence<std::variant_size_v<V>>{});
+}
+
+// Encodes the alternative of V named `name`; false when V has none.
+template <class V>
+bool encode_named(std::string_view name, PyObject* fields, bool ignore_derived, py::bytes& out) {
+    bool done = false;
+    for_each_alternative<V>([&](auto t) {
+        using M = typename decltype(t)::type;
+        if (done || robowire::table_v<M>.name != name) return;
+        done = true;
+        out = encode_fields<M>(fields, ignore_derived);
+    });
+    return done;
+}
+
+template <class V>
+std::string message_names() {
+    std::string s;
+    for_each_alternative<V>([&](auto t) {
+        s += (s.empty() ? "" : ", ") + std::string(robowire::table_v<typename decltype(t)::type>.name);
+    });
+    return s;
+}
+
+// Does `in` carry M's fixed bytes, as far as it goes (and reach one of them)?
+template <class M>
+bool carries_fixed_bytes(std::span<const std::uint8_t> in) {
+    bool reached = false;
+    for (const auto& b : robowire::table_v<M>.fixed) {
+        if (b.offset >= in.size()) continue;
+        if (in[b.offset] != b.value) return false;
+        reached = true;
+    }
+    return reached;
+}
+// Raises DecodeError for a decode error of variant V: described by the
+// alternative whose fixed bytes the input carries (as the tool does).
+template <class V>
+[[noreturn]] void raise_decode(std::span<const std::uint8_t> in, const robowire::error& e, const std::vector<std::string>& notes = {},
+                               std::string_view extra = {}) {
+    for_each_alternative<V>([&](auto t) {
+        using M = typename decltype(t)::type;
+        if (carries_fixed_bytes<M>(in)) raise_for<M>(classes().decode, e, notes, extra);
+    });
+    raise(classes().decode, std::string(robowire::to_string(e.code)) + " at byte " + std::to_string(e.offset) + std::string(extra),
+          e.code, e.offset, {}, {}, notes);
+}
+
+// The bytes of a bytes-like object (bytes, bytearray, memoryview, ...).
+inline std::span<const std::uint8_t> view_of(PyObject* o, Py_buffer& view) {
+    if (PyBytes_Check(o))
+        return {reinterpret_cast<const std::uint8_t*>(PyBytes_AS_STRING(o)), static_cast<std::size_t>(PyBytes_GET_SIZE(o))};
+    if (!PyObject_CheckBuffer(o) || PyUnicode_Check(o))
+        throw py::type_error(std::string("expected bytes, bytearray or memoryview, got ") + type_name(o) +
+                             (PyUnicode_Check(o) ? " (hex text: bytes.fromhex(text))" : ""));
+    if (PyObject_GetBuffer(o, &view, PyBUF_SIMPLE) != 0) throw py::error_already_set();
+    return {static_cast<const std::uint8_t*>(view.buf), static_cast<std::size_t>(view.len)};
+}
+// Holds a buffer for the duration of a call.
+class byte_input {
+public:
+    explicit byte_input(py::handle o) { bytes_ = view_of(o.ptr(), view_); }
+    ~byte_input() {
+        if (view_.obj) PyBuffer_Release(&view_);
+    }
+    byte_input(const byte_input&) = delete;
+    byte_input& operator=(const byte_input&) = delete;
+    std::span<const std::uint8_t> span() const { return bytes_; }
+
+private:
+    Py_buffer view_{};
+    std::span<const std::uint8_t> bytes_;
+};
+
+// encode(message, **fields) or encode(dict): which message and which fields.
+struct encode_request {
+    std::string name;
+    PyObject* fields = nullptr;  // borrowed; may be null
+    bool from_dict = false;
+};
+inline encode_request encode_args(std::string_view protocol, py::handle message, py::handle kwargs) {
+    encode_request r;
+    if (PyUnicode_Check(message.ptr())) {
+        r.name = message.cast<std::string>();
+        r.fields = kwargs && !kwargs.is_none() && PyDict_Size(kwargs.ptr()) > 0 ? kwargs.ptr() : nullptr;
+        return r;
+    }
+    if (!PyDict_Check(message.ptr()))
+        throw py::type_error("encode: expected a message name (str) or a dict as decode returns it, got " + type_name(message.ptr()));
+    if (kwargs && !kwargs.is_none() && PyDict_Size(kwargs.ptr()) > 0)
+        throw py::type_error("encode: give a dict or a message name with fields, not both");
+    PyObject* d = message.ptr();
+    PyObject* name = PyDict_GetItemString(d, "message");
+    if (!name) throw py::key_error("encode: the dict has no \"message\"");
+    if (!PyUnicode_Check(name)) throw py::type_error("encode: \"message\" is not a str");
+    r.name = py::reinterpret_borrow<py::str>(name).cast<std::string>();
+    if (PyObject* p = PyDict_GetItemString(d, "protocol"); p && PyUnicode_Check(p)) {
+        const auto given = py::reinterpret_borrow<py::str>(p).cast<std::string>();
+        if (given != protocol) throw py::value_error("encode: a " + given + " message given to " + std::string(protocol) + ".encode");
+    }
+    PyObject* fields = PyDict_GetItemString(d, "fields");
+    if (fields && fields != Py_None && !PyDict_Check(fields)) throw py::type_error("encode: \"fields\" is not a dict");
+    r.fields = fields == Py_None ? nullptr : fields;
+    r.from_dict = true;
+    return r;
+}
+
+}  // namespace rwpy

@@ -1,0 +1,32 @@
+// robowire._robowire: the extension behind the robowire package. One
+// submodule per protocol (buwizz3.cpp, navbot.cpp, osp.cpp, each its own
+// translation unit so that they compile in parallel), plus the schema and
+// the error codes.
+#include "codec.hpp"
+#include "protocols.hpp"
+
+namespace py = pybind11;
+
+PYBIND11_MODULE(_robowire, m) {
+    m.doc() = "robowire's codecs, built from the library's tables (use the robowire package)";
+    py::module_ errors = py::module_::import("robowire._errors");
+    auto& c = rwpy::classes();
+    c.decode = py::object(errors.attr("DecodeError")).release().ptr();
+    c.encode = py::object(errors.attr("EncodeError")).release().ptr();
+
+    m.def("schema_json", [](const std::string& protocol) { return robowire::schema::all(protocol).dump(); }, py::arg("protocol") = "",
+          "The tables as JSON text (the format of `robowire list --json`).");
+    py::dict codes;
+    for (int i = 0; i < robowire::schema::errc_count; ++i) {
+        const auto e = static_cast<robowire::errc>(i);
+        codes[py::str(std::string(robowire::schema::errc_name(e)))] = py::str(std::string(robowire::to_string(e)));
+    }
+    m.attr("error_codes") = codes;
+
+    py::module_ buwizz3 = m.def_submodule("buwizz3", "BuWizz3");
+    py::module_ navbot = m.def_submodule("navbot", "NAVBOT-ES02");
+    py::module_ osp = m.def_submodule("osp", "OSP");
+    rwpy::init_buwizz3(buwizz3);
+    rwpy::init_navbot(navbot);
+    rwpy::init_osp(osp);
+}

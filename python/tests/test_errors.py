@@ -1,0 +1,213 @@
+"""Every error path: DecodeError / EncodeError with code, offset, field and
+describe_error's text (worked out by hand from its documented format),
+TypeError / KeyError / ValueError for calls that are wrong in shape."""
+import pytest
+
+import robowire
+from robowire import DecodeError, EncodeError, buwizz3, navbot, osp
+from vectors import STATUS_68
+
+
+def decode_error(fn, *args, **kwargs):
+    with pytest.raises(DecodeError) as e:
+        fn(*args, **kwargs)
+    return e.value
+
+
+def encode_error(fn, *args, **kwargs):
+    with pytest.raises(EncodeError) as e:
+        fn(*args, **kwargs)
+    return e.value
+
+
+def test_errors_are_value_errors():
+    assert issubclass(DecodeError, ValueError) and issubclass(EncodeError, ValueError)
+    assert not issubclass(DecodeError, EncodeError) and not issubclass(EncodeError, DecodeError)
+
+
+@pytest.mark.parametrize("module,hexs,code,offset,field,message,text", [
+    (buwizz3, "32 0A", "value_out_of_range", 1, "period_ms", "set_data_period",
+     "set_data_period.period_ms: value out of range (valid 20..255 ms) at byte 1"),
+    (buwizz3, "30 80 00 00 00 00 00 00 00", "value_out_of_range", 1, "power", "set_motor_data",
+     "set_motor_data.power: value out of range (valid -127..127 raw) at byte 1"),
+    (buwizz3, "37 05", "invalid_enum", 1, "setting", "set_accel_lpf", "set_accel_lpf.setting: value is not a valid code at byte 1"),
+    (buwizz3, "30 00", "too_short", 2, None, "set_motor_data", "set_motor_data: input too short (9 bytes) at byte 2"),
+    (buwizz3, "30 00 00 00 00 00 00 00 00 00", "too_long", 9, None, "set_motor_data",
+     "set_motor_data: input too long (9 bytes) at byte 9"),
+    (buwizz3, "01" + "00" * 59, "bad_length", 54, "pid_state", "status",
+     "status.pid_state: length matches no form of the message (54 or 68..129 bytes) at byte 54"),
+    (buwizz3, "36 00 00 00 00", "bad_length", 1, "colors", "set_led_status",
+     "set_led_status.colors: length matches no form of the message (1, 13 or 17 bytes) at byte 1"),
+    (buwizz3, "20 41 00 42 00 00 00 00 00 00 00 00 00", "bad_padding", 3, "name", "set_device_name",
+     "set_device_name.name: non-zero byte after text terminator at byte 3"),
+    (buwizz3, "", "too_short", 0, None, None, "input too short at byte 0"),
+    (navbot, "55 AA 10 00 00 00 00 8A 00 01 00 00 00 00 00 00 00 00 00 00", "value_out_of_range", 7, "pitch", "maneuver",
+     "maneuver.pitch: value out of range (valid -100..100 %) at byte 7"),
+    (navbot, "55 AA 10 00 00 00 00 00 00 03 00 00 00 00 00 00 00 00 00 00", "invalid_enum", 9, "switch_a", "maneuver",
+     "maneuver.switch_a: value is not a valid code at byte 9"),
+    (navbot, "55 AA 10 01 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00", "bad_sequence", 3, "remaining", "frame",
+     "frame.remaining: frame out of sequence at byte 3"),
+    (navbot, "54 AA 02 00 00" + " 00" * 15, "bad_header", 0, None, None, "bad header byte at byte 0"),
+    (navbot, "55 AA 02 00", "too_short", 4, None, "frame",
+     "frame: input too short (20 bytes) at byte 4 (NAVBOT frames are 20 bytes)"),
+    (osp, "FF AA 02 12 D2 04 00 00 55 78", "bad_trailer", 9, None, None, "bad trailer byte at byte 9"),
+    (osp, "FE AA 02 12 D2 04 00 00 55 77", "bad_header", 0, None, None, "bad header byte at byte 0"),
+    (osp, "FF AA 02 12 D2 04 00 00 55", "too_short", 9, None, "voltage", "voltage: input too short (10 bytes) at byte 9"),
+    (osp, "FF AA 00 11 07 00 00 00 55 77", "invalid_enum", 4, "type", "device_type",
+     "device_type.type: value is not a valid code at byte 4 (DEV 00 CMD 11 params 07 00 00 00)"),
+    (osp, "FF AA 03 01 0A 0B 0C 0D 55 77", "unknown_message", 2, None, None,
+     "unknown message at byte 2 (DEV 03 CMD 01 params 0A 0B 0C 0D)"),
+])
+def test_decode_errors(module, hexs, code, offset, field, message, text):
+    e = decode_error(module.decode, bytes.fromhex(hexs))
+    assert (e.code, e.offset, e.field, e.message, str(e)) == (code, offset, field, message, text)
+    assert code in robowire.error_codes
+
+
+def test_navbot_22_byte_sample_explained():
+    e = decode_error(navbot.decode, bytes(22))  # markers are checked before the length
+    assert (e.code, e.offset) == ("bad_header", 0)
+    e = decode_error(navbot.decode, bytes.fromhex("55 AA 10 00 00" + "00" * 17))
+    assert e.code == "too_long" and e.offset == 20
+    assert "the protocol document's sample frames have 2 extra bytes" in str(e)
+
+
+def test_navbot_error_notes():
+    e = decode_error(navbot.decode, bytes.fromhex("55 AA 10 00 00 00 00 8A 00 01 00 00 00 00 00 00 00 00 00 00"))
+    assert e.notes == ["pitch at byte 7 is 0x8A = -118 (two's complement, what the robot reads); in the sign-magnitude "
+                       "spelling of the protocol document's samples 0x8A = -10"]
+
+
+def test_buwizz3_unknown_and_wrong_direction():
+    e = decode_error(buwizz3.decode, b"\x99")
+    assert (e.code, e.offset, str(e)) == ("unknown_message", 0, "unknown message at byte 0: 0x99 is no BuWizz3 command or notification")
+    e = decode_error(buwizz3.decode, STATUS_68, direction="command")
+    assert e.code == "unknown_message" and str(e).endswith("(0x01 is the notification status)")
+    e = decode_error(buwizz3.decode, b"\x30" + bytes(8), direction="notification")
+    assert e.code == "unknown_message" and str(e).endswith("(0x30 is the command set_motor_data)")
+    # 0x23 with a length neither direction takes: decoded as the command, both named
+    e = decode_error(buwizz3.decode, b"\x23\x00")
+    assert e.code == "too_long" and "0x23 is the command read_accel_calibration (1 byte) and the notification " \
+                                      "accel_calibration (25 bytes); 2 bytes given" in str(e)
+    with pytest.raises(ValueError, match="direction"):
+        buwizz3.decode(b"\x01", direction="up")
+    with pytest.raises(ValueError, match="buwizz3 only"):
+        osp.decode(bytes(10), direction="command")
+    with pytest.raises(ValueError, match="buwizz3 only"):
+        navbot.decode(bytes(20), direction="command")
+
+
+@pytest.mark.parametrize("module,message,kwargs,code,offset,field,text", [
+    (navbot, "maneuver", {"pitch": 200}, "value_out_of_range", 7, "pitch", "maneuver.pitch: value out of range (valid -100..100 %) at byte 7"),
+    (navbot, "maneuver", {"height": -1}, "value_out_of_range", 6, "height", "maneuver.height: value out of range (valid 0..100 %) at byte 6"),
+    (navbot, "maneuver", {"switch_a": "jump"}, "invalid_enum", 9, "switch_a", "maneuver.switch_a: value is not a valid code at byte 9"),
+    (navbot, "maneuver", {"switch_d": 7}, "invalid_enum", 12, "switch_d", "maneuver.switch_d: value is not a valid code at byte 12"),
+    (buwizz3, "set_motor_data", {"power": [0, 0, -128, 0, 0, 0]}, "value_out_of_range", 3, "power",
+     "set_motor_data.power: value out of range (valid -127..127 raw) at byte 3"),
+    (buwizz3, "set_motor_data", {"brake_flags": 0x40}, "value_out_of_range", 7, "brake_flags",
+     "set_motor_data.brake_flags: value out of range (valid 0..63) at byte 7"),
+    (buwizz3, "set_data_period", {"period_ms": 10}, "value_out_of_range", 1, "period_ms",
+     "set_data_period.period_ms: value out of range (valid 20..255 ms) at byte 1"),
+    (buwizz3, "set_data_period", {"period_ms": 2 ** 70}, "value_out_of_range", 1, "period_ms",
+     "set_data_period.period_ms: value out of range (valid 20..255 ms) at byte 1"),
+    (buwizz3, "set_motion_wakeup", {"enabled": 2}, "value_out_of_range", 1, "enabled",
+     "set_motion_wakeup.enabled: value out of range (valid 0..1) at byte 1"),
+    (buwizz3, "set_device_name", {"name": "Thirteen char"}, "value_out_of_range", 1, "name",
+     "set_device_name.name: value out of range (valid up to 12 bytes) at byte 1"),
+    # the offset is the first absent block's (encoded_size in core/detail/encode.hpp)
+    (buwizz3, "set_led_status", {"blink": [{}, {}, {}, {}]}, "missing_field", 1, "colors",
+     "set_led_status.colors: optional block present without the one before it at byte 1"),
+    (buwizz3, "set_led_status", {"colors": [{}, {"g": 256}, {}, {}]}, "value_out_of_range", 5, "colors.g",
+     "set_led_status.colors.g: value out of range (valid 0..255) at byte 5"),
+    (buwizz3, "charger_settings", {"data": bytes(129)}, "capacity_exceeded", 1, "data",
+     "charger_settings.data: capacity exceeded at byte 1"),
+    (buwizz3, "set_accel_calibration", {"factors": [1e39, 0, 0, 0, 0, 0]}, "value_out_of_range", 1, "factors",
+     "set_accel_calibration.factors: value out of range (valid a 32-bit float) at byte 1"),
+    (osp, "set_angle", {"angle": 65536}, "value_out_of_range", 5, "angle",
+     "set_angle.angle: value out of range (valid 0..65535 raw) at byte 5"),
+])
+def test_encode_errors(module, message, kwargs, code, offset, field, text):
+    e = encode_error(module.encode, message, **kwargs)
+    assert (e.code, e.offset, e.field, e.message, str(e)) == (code, offset, field, message, text)
+
+
+@pytest.mark.parametrize("module,args,kwargs,exc,words", [
+    (navbot, ("maneuver",), {"pitch": "fast"}, TypeError, "maneuver.pitch: expected an int, got str"),
+    (navbot, ("maneuver",), {"pitch": 1.5}, TypeError, "maneuver.pitch: expected an int, got float"),
+    (navbot, ("maneuver",), {"switch_a": 1.0}, TypeError, "maneuver.switch_a: expected a name (str) or code (int), got float"),
+    (buwizz3, ("set_motor_data",), {"power": 5}, TypeError, "set_motor_data.power: expected a list of 6 values, got int"),
+    (buwizz3, ("set_motor_data",), {"power": [1, 2]}, ValueError, "set_motor_data.power: 2 values given, 6 expected"),
+    (buwizz3, ("set_motor_data",), {"power": [1, 2, 3, 4, 5, "6"]}, TypeError, "set_motor_data.power[5]: expected an int, got str"),
+    (buwizz3, ("set_led_status",), {"colors": [1, 2, 3, 4]}, TypeError, "set_led_status.colors[0]: expected a dict of rgb fields, got int"),
+    (buwizz3, ("set_device_name",), {"name": b"abc"}, TypeError, "set_device_name.name: expected a str, got bytes"),
+    (buwizz3, ("set_accel_calibration",), {"factors": [0, 0, 0, 0, 0, "x"]}, TypeError, "expected a float, got str"),
+    (buwizz3, ("set_motion_wakeup",), {"enabled": "yes"}, TypeError, "set_motion_wakeup.enabled: expected a bool, got str"),
+    (buwizz3, ("charger_settings",), {"data": 5}, TypeError, "charger_settings.data: expected bytes or hex text, got int"),
+    (buwizz3, ("charger_settings",), {"data": "0x zz"}, ValueError, "charger_settings.data: not hex bytes"),
+    (navbot, ("maneuver",), {"speed": 3}, KeyError, "unknown field maneuver.speed (fields of maneuver: roll, height, pitch"),
+    (buwizz3, ("set_led_status",), {"colors": [{"red": 1}, {}, {}, {}]}, KeyError, "unknown field set_led_status.colors[0].red (fields of rgb: r, g, b)"),
+    (buwizz3, ("status",), {"battery_voltage": 13.0}, KeyError, "encode takes the raw value"),
+    (navbot, ("jump",), {}, KeyError, "unknown message jump of navbot (messages: maneuver, frame)"),
+    (osp, ("status",), {"state": "charging", "flag": 1}, KeyError, "unknown field status.flag"),
+    (osp, (42,), {}, TypeError, "expected a message name (str) or a dict"),
+    (osp, ({"message": "status"},), {"flags": 1}, TypeError, "not both"),
+    (osp, ({"fields": {}},), {}, KeyError, "no \"message\""),
+    (osp, ({"message": "status", "protocol": "navbot", "fields": {}},), {}, ValueError, "a navbot message given to osp.encode"),
+])
+def test_shape_errors(module, args, kwargs, exc, words):
+    with pytest.raises(exc) as e:
+        module.encode(*args, **kwargs)
+    assert not isinstance(e.value, (EncodeError, DecodeError))
+    assert words in str(e.value)
+
+
+def test_decode_needs_bytes():
+    with pytest.raises(TypeError, match=r"bytes.fromhex"):
+        osp.decode("FF AA 02 12 D2 04 00 00 55 77")
+    with pytest.raises(TypeError, match="got int"):
+        navbot.decode(5)
+
+
+def test_encode_dict_ignores_what_decode_adds():
+    d = osp.decode(bytes.fromhex("FF AA 02 14 03 05 00 00 55 77"))
+    d["fields"]["flags_bits"]["overheat"] = False  # only the raw value counts
+    assert osp.encode(d) == bytes.fromhex("FF AA 02 14 03 05 00 00 55 77")
+    d["fields"]["flags"] = 1
+    assert osp.encode(d) == bytes.fromhex("FF AA 02 14 03 01 00 00 55 77")
+
+
+def test_unit_helper_errors():
+    e = encode_error(buwizz3.ramp_rate_from_seconds, 0)
+    assert (e.code, e.offset) == ("value_out_of_range", 1)
+    e = encode_error(buwizz3.current_limit_raw, 7680)  # 256 steps of 30 mA
+    assert e.code == "value_out_of_range"
+    assert buwizz3.current_limit_raw(7649) == 255  # 254.97 steps, rounded
+    e = encode_error(buwizz3.lpf_from_hz, 40.0)
+    assert e.code == "invalid_enum"
+    e = encode_error(buwizz3.lpf_hz, "hz_40")
+    assert e.code == "invalid_enum"
+    e = encode_error(buwizz3.uart_characteristic, 5)
+    assert e.code == "value_out_of_range"
+    e = encode_error(osp.soc_from_basis_points, 10001)
+    assert (e.code, e.offset) == ("value_out_of_range", 4)
+    e = encode_error(osp.voltage_from_millivolts, 327680)  # 32768 centivolts
+    assert e.code == "value_out_of_range"
+    e = encode_error(osp.angle_from_radians, -1.0)
+    assert (e.code, e.offset) == ("value_out_of_range", 5)
+    e = encode_error(buwizz3.k_lp_from_cutoff, 0.0)
+    assert e.code == "value_out_of_range"
+    e = encode_error(buwizz3.generic_pid_preset, 0, "fast")
+    assert e.code == "invalid_enum"
+    e = encode_error(navbot.fragment, navbot.command.json, bytes(3841))
+    assert e.code == "capacity_exceeded"
+
+
+def test_advertisement_error():
+    # length byte 5 at offset 3 runs past the end
+    e = decode_error(buwizz3.parse_advertisement, bytes.fromhex("02 01 06 05 FF 4E"))
+    assert (e.code, e.offset) == ("bad_length", 3)
+
+
+def test_schema_unknown_protocol():
+    with pytest.raises(KeyError):
+        robowire.schema("lego")

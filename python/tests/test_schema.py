@@ -1,0 +1,100 @@
+"""robowire.schema() against the documents, and the Python package against
+the command-line tool: the same tables (list --json) and the same JSON line."""
+import json
+import subprocess
+
+import pytest
+
+import robowire
+from robowire import buwizz3, navbot, osp
+from vectors import CASES, STATUS_68
+
+MODULES = {"buwizz3": buwizz3, "navbot": navbot, "osp": osp}
+
+
+def message(proto, name):
+    entry = robowire.schema(proto)["protocols"][0]
+    return next(m for m in entry["messages"] if m["name"] == name)
+
+
+def test_schema_shape():
+    s = robowire.schema()
+    assert s["format"] == 1
+    assert [p["name"] for p in s["protocols"]] == ["buwizz3", "navbot", "osp"]
+    assert buwizz3.schema() == s["protocols"][0] and osp.schema() == s["protocols"][2]
+    names = [m["name"] for m in s["protocols"][1]["messages"]]
+    assert names == ["maneuver", "frame"]
+
+
+def test_schema_against_the_documents():
+    # BuWizz3 0x30 set motor data: 9 bytes, 6 x i8 power -127..127 at byte 1, flags at 7 and 8 (bits 0-5)
+    m = message("buwizz3", "set_motor_data")
+    assert (m["direction"], m["key"], m["lengths"]) == ("command", [0x30], [[9, 9]])
+    power = m["fields"][0]
+    assert (power["name"], power["offset"], power["type"], power["count"], power["valid"]) == \
+        ("power", 1, "i8", 6, {"min": -127, "max": 127})
+    assert power["unit"]["name"] == "%" and power["unit"]["scale"] == pytest.approx(100 / 127)
+    assert [b["name"] for b in m["fields"][1]["flag_bits"]] == ["port1", "port2", "port3", "port4", "port5", "port6"]
+    # status: 54 or 68..129 bytes; battery 9 V + raw x 0.05 V at byte 2; 4 PU motors of 8 bytes at 22
+    m = message("buwizz3", "status")
+    assert (m["direction"], m["lengths"]) == ("notification", [[54, 54], [68, 129]])
+    by_name = {f["name"]: f for f in m["fields"]}
+    assert by_name["battery_voltage_raw"]["unit"] == {"name": "V", "scale": 0.05, "offset": 9.0}
+    pu = by_name["pu_motors"]
+    assert (pu["offset"], pu["count"], pu["element_size"], pu["type"]) == (22, 4, 8, "record")
+    assert [f["name"] for f in pu["record"]["fields"]] == ["type", "velocity", "absolute_position", "position"]
+    assert by_name["pid_state"]["optional"] and by_name["pid_state"]["offset"] == 54
+    battery = [b for b in by_name["flags"]["flag_bits"] if b["name"] == "battery"][0]
+    assert (battery["lo"], battery["width"], battery["values"]) == (3, 2, ["empty", "low", "medium", "full"])
+    # 0x37 LPF: the eight settings of the document
+    setting = message("buwizz3", "set_accel_lpf")["fields"][0]
+    assert {e["name"]: e["value"] for e in setting["enum"]} == {
+        "hz_0_781": 0b1000, "hz_1_563": 0b1001, "hz_3_125": 0b1010, "hz_6_25": 0b1011,
+        "hz_12_5": 0b0000, "hz_25": 0b0001, "hz_50": 0b0010, "hz_100": 0b0011}
+    # blink byte: frequency bits 7-4, duty bits 3-0
+    blink = message("buwizz3", "set_led_status")["fields"][1]["record"]["fields"]
+    assert [(f["name"], f["bits"]) for f in blink] == [("frequency_hz", {"lo": 4, "width": 4}), ("duty", {"lo": 0, "width": 4})]
+    # OSP: DEV CMD keys, 10-byte frames
+    m = message("osp", "status")
+    assert (m["key"], m["lengths"]) == ([0x02, 0x14], [[10, 10]])
+    assert [(f["offset"], f["name"]) for f in message("osp", "set_angle")["fields"]] == [(4, "joint"), (5, "angle")]
+    # NAVBOT maneuver: pitch at byte 7, -100..100 %
+    pitch = [f for f in message("navbot", "maneuver")["fields"] if f["name"] == "pitch"][0]
+    assert (pitch["offset"], pitch["valid"], pitch["unit"]["name"]) == (7, {"min": -100, "max": 100}, "%")
+
+
+def test_error_codes():
+    assert robowire.error_codes["value_out_of_range"] == "value out of range"
+    assert robowire.error_codes["bad_length"] == "length matches no form of the message"
+    assert len(robowire.error_codes) == 18 and "ok" not in robowire.error_codes
+
+
+def test_cli_list_json_is_the_schema(cli):
+    out = subprocess.run([cli, "list", "--json"], capture_output=True, text=True, check=True).stdout
+    assert json.loads(out) == robowire.schema()
+    out = subprocess.run([cli, "list", "osp", "--json"], capture_output=True, text=True, check=True).stdout
+    assert json.loads(out) == robowire.schema("osp")
+
+
+@pytest.mark.parametrize("proto,direction,hexs,name,fields,kwargs", CASES + [("buwizz3", None, STATUS_68.hex(), "status", {}, {})],
+                         ids=[f"{c[0]}-{c[3]}-{len(c[2])}" for c in CASES] + ["buwizz3-status68"])
+def test_decode_is_the_cli_json_line(cli, proto, direction, hexs, name, fields, kwargs):
+    args = [cli, "decode", proto, hexs, "--json"] + (["--direction", direction] if direction else [])
+    out = subprocess.run(args, capture_output=True, text=True, check=True).stdout
+    m = MODULES[proto]
+    mine = m.decode(bytes.fromhex(hexs), direction=direction) if direction else m.decode(bytes.fromhex(hexs))
+    assert mine == json.loads(out)
+
+
+@pytest.mark.parametrize("proto,hexs", [
+    ("buwizz3", "32 0A"), ("buwizz3", "37 05"), ("navbot", "55 AA 10 00 00 00 00 8A 00 01 00 00 00 00 00 00 00 00 00 00"),
+    ("osp", "FF AA 00 11 07 00 00 00 55 77"),
+])
+def test_decode_errors_name_what_the_cli_names(cli, proto, hexs):
+    p = subprocess.run([cli, "decode", proto, hexs, "--json"], capture_output=True, text=True)
+    assert p.returncode == 1
+    cli_error = json.loads(p.stdout)["error"]
+    with pytest.raises(robowire.DecodeError) as e:
+        MODULES[proto].decode(bytes.fromhex(hexs))
+    # both name the error, the byte and the field
+    assert f"at byte {e.value.offset}" in cli_error and e.value.field in cli_error

@@ -1,0 +1,205 @@
+// The protocols' tables as one JSON document (nlohmann/json): what
+// `robowire list --json` prints and `robowire.schema()` returns in Python.
+// Built from table_v, enum_table_v and flag_bits_v of each protocol's
+// std::variant of messages, so a message added to a protocol appears here
+// with no change. Format (every key always present unless marked):
+//
+//   {"format": 1, "protocols": [
+//     {"name": "buwizz3", "summary": "...", "messages": [
+//       {"name": "set_motor_data", "direction": "command" | "notification" | null,
+//        "key": [48],                  // the bytes that select the message (command; OSP: DEV, CMD)
+//        "fixed": [{"offset": 0, "value": 48, "error": "bad_command"}],
+//        "lengths": [[9, 9]],          // accepted input lengths, as runs [first, last]
+//        "min_size": 9, "max_size": 9, "max_input": 9,
+//        "fields": [FIELD...]}]}]}
+//
+//   FIELD: {"name", "offset", "type" (wire type: u8 i8 u16le i16le u32le i32le
+//           f32le bits text tail record), "value" (the decoded value's kind:
+//           int float bool enum text bytes record), "count" (1 unless
+//           "array"), "array", "optional", "element_size", "size",
+//           "valid": {"min", "max"} | null (int and bits fields),
+//           "unit": {"name", "scale", "offset"} | null,
+//           "bits": {"lo", "width"} (bits fields only),
+//           "enum": [{"name", "value"}...] (enum fields only),
+//           "flag_bits": [{"lo", "width", "name", "values"}...] (flag bytes only),
+//           "capacity" (text and tail fields only),
+//           "record": {"name", "size", "fields": [FIELD...]} (record fields only)}
+#pragma once
+
+#include <robowire/core/fields.hpp>
+#include <robowire/core/flag_bits.hpp>
+#include <robowire/core/table.hpp>
+#include <robowire/robowire.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <variant>
+
+namespace robowire::schema {
+
+using json = nlohmann::ordered_json;
+
+inline constexpr int format_version = 1;
+
+// Name of an error code as the schema and the Python package spell it.
+constexpr std::string_view errc_name(errc e) noexcept {
+    switch (e) {
+    case errc::ok: return "ok";
+    case errc::too_short: return "too_short";
+    case errc::too_long: return "too_long";
+    case errc::bad_length: return "bad_length";
+    case errc::bad_header: return "bad_header";
+    case errc::bad_trailer: return "bad_trailer";
+    case errc::bad_command: return "bad_command";
+    case errc::bad_device: return "bad_device";
+    case errc::unknown_message: return "unknown_message";
+    case errc::value_out_of_range: return "value_out_of_range";
+    case errc::invalid_enum: return "invalid_enum";
+    case errc::bad_padding: return "bad_padding";
+    case errc::reserved_not_zero: return "reserved_not_zero";
+    case errc::missing_field: return "missing_field";
+    case errc::buffer_too_small: return "buffer_too_small";
+    case errc::capacity_exceeded: return "capacity_exceeded";
+    case errc::bad_sequence: return "bad_sequence";
+    case errc::command_changed: return "command_changed";
+    case errc::bad_json: return "bad_json";
+    }
+    return "unknown_error";
+}
+inline constexpr int errc_count = static_cast<int>(errc::bad_json) + 1;
+
+template <class F>
+using element_t = typename F::element_type;
+
+// The kind of Python / JSON value a field's element decodes to.
+template <class F>
+constexpr std::string_view value_kind() noexcept {
+    using E = element_t<F>;
+    if constexpr (F::kind == wire_kind::record) return "record";
+    else if constexpr (F::kind == wire_kind::text) return "text";
+    else if constexpr (F::kind == wire_kind::tail) return "bytes";
+    else if constexpr (std::is_enum_v<E>) return "enum";
+    else if constexpr (std::is_same_v<E, bool>) return "bool";
+    else if constexpr (std::is_floating_point_v<E>) return "float";
+    else return "int";
+}
+
+template <class M>
+json fields_of();
+
+template <class M, class F>
+json field_of(const F& f) {
+    using E = element_t<F>;
+    json j = {{"name", f.name},
+              {"offset", f.offset},
+              {"type", to_string(F::kind)},
+              {"value", value_kind<F>()},
+              {"count", F::count},
+              {"array", F::is_array},
+              {"optional", F::is_optional},
+              {"element_size", F::element_size},
+              {"size", F::size}};
+    if constexpr (F::kind == wire_kind::bits) j["bits"] = {{"lo", F::wire_type::lo}, {"width", F::wire_type::width}};
+    const bool ranged = value_kind<F>() == "int";
+    j["valid"] = ranged ? json{{"min", f.valid.min}, {"max", f.valid.max}} : json(nullptr);
+    j["unit"] = f.unit.name.empty() ? json(nullptr)
+                                    : json{{"name", f.unit.name}, {"scale", f.unit.scale}, {"offset", f.unit.offset}};
+    if constexpr (std::is_enum_v<E>) {
+        json values = json::array();
+        for (const auto& e : enum_table_v<E>)
+            values.push_back({{"name", e.name}, {"value", static_cast<std::int64_t>(e.value)}});
+        j["enum"] = std::move(values);
+    }
+    if constexpr (has_flag_bits<M>) {
+        json bits = json::array();
+        for (const auto& b : flag_bits_v<M>) {
+            if (b.field != f.name) continue;
+            json values = json::array();
+            if (b.width > 1)
+                for (std::size_t v = 0; v < b.values.size() && v < (1u << b.width); ++v) values.push_back(b.values[v]);
+            bits.push_back({{"lo", b.lo}, {"width", b.width}, {"name", b.name}, {"values", std::move(values)}});
+        }
+        if (!bits.empty()) j["flag_bits"] = std::move(bits);
+    }
+    if constexpr (F::kind == wire_kind::text || F::kind == wire_kind::tail) j["capacity"] = E::capacity();
+    if constexpr (F::kind == wire_kind::record)
+        j["record"] = {{"name", table_v<E>.name}, {"size", table_v<E>.max_size()}, {"fields", fields_of<E>()}};
+    return j;
+}
+
+template <class M>
+json fields_of() {
+    json out = json::array();
+    for_each_field<M>([&](const auto& f) { out.push_back(field_of<M>(f)); });
+    return out;
+}
+
+template <class M>
+json message_of(std::string_view direction) {
+    constexpr auto& t = table_v<M>;
+    json fixed = json::array(), key = json::array();
+    for (const auto& b : t.fixed) {
+        fixed.push_back({{"offset", b.offset}, {"value", b.value}, {"error", errc_name(b.code)}});
+        if (b.code == errc::bad_command || b.code == errc::bad_device) key.push_back(b.value);
+    }
+    json lengths = json::array();
+    constexpr auto& runs = detail::length_runs_v<M>;
+    for (std::size_t i = 0; i < runs.count; ++i) lengths.push_back({runs.run[i][0], runs.run[i][1]});
+    return {{"name", t.name},
+            {"direction", direction.empty() ? json(nullptr) : json(direction)},
+            {"key", std::move(key)},
+            {"fixed", std::move(fixed)},
+            {"lengths", std::move(lengths)},
+            {"min_size", t.min_size()},
+            {"max_size", t.max_size()},
+            {"max_input", t.max_input()},
+            {"fields", fields_of<M>()}};
+}
+
+// Appends every alternative of variant V to `messages`.
+template <class V>
+void add_messages(json& messages, std::string_view direction = {}) {
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        (messages.push_back(message_of<std::variant_alternative_t<I, V>>(direction)), ...);
+    }(std::make_index_sequence<std::variant_size_v<V>>{});
+}
+
+// One protocol's entry, around its messages (add_messages).
+inline json protocol_entry(std::string_view name, std::string_view summary, json messages) {
+    return {{"name", name}, {"summary", summary}, {"messages", std::move(messages)}};
+}
+
+// The whole document around protocol entries.
+inline json document(json protocols) { return {{"format", format_version}, {"protocols", std::move(protocols)}}; }
+
+// Each protocol: its message lists (the std::variants the dispatchers decode).
+inline json buwizz3_entry() {
+    json m = json::array();
+    add_messages<buwizz3::command>(m, "command");
+    add_messages<buwizz3::notification>(m, "notification");
+    return protocol_entry("buwizz3", "BLE; byte 0 = command", std::move(m));
+}
+inline json navbot_entry() {
+    json m = json::array();
+    add_messages<navbot::message>(m);
+    return protocol_entry("navbot", "BLE; 20-byte frames: 55 AA command remaining 00, 15 payload bytes", std::move(m));
+}
+inline json osp_entry() {
+    json m = json::array();
+    add_messages<osp::message>(m);
+    return protocol_entry("osp", "serial; FF AA DEV CMD P1..P4 55 77", std::move(m));
+}
+// Every protocol, or the one named (an empty "protocols" list for an unknown name).
+inline json all(std::string_view only = {}) {
+    json p = json::array();
+    if (only.empty() || only == "buwizz3") p.push_back(buwizz3_entry());
+    if (only.empty() || only == "navbot") p.push_back(navbot_entry());
+    if (only.empty() || only == "osp") p.push_back(osp_entry());
+    return document(std::move(p));
+}
+
+}  // namespace robowire::schema
