@@ -2,6 +2,8 @@
 // command values, and the document's PID presets.
 #pragma once
 
+#include "../core/config.hpp"  // first: the C++ version check
+
 #include <cstdint>
 #include <numbers>
 

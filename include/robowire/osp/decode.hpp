@@ -3,12 +3,13 @@
 // virtual calls.
 #pragma once
 
+#include "../core/config.hpp"  // first: the C++ version check
+
 #include <optional>
 #include <span>
 #include <type_traits>
 #include <variant>
 
-#include "../core/config.hpp"
 #include "../core/dispatch.hpp"
 #include "messages.hpp"
 
