@@ -28,7 +28,8 @@ using byte_vector = std::vector<std::uint8_t>;
 inline constexpr int exit_ok = 0, exit_bad_input = 1, exit_usage = 2;
 
 // ---- hex.cpp
-// Parses hex as users paste it: "01 6D", "016d50", "0x01,0x6D", "01-6D", "01:6D",
+// Parses hex as users paste it: "01 6D", "016d50", "0x01,0x6D", "0x1,0x6d" (one
+// digit after 0x is one byte), "01-6D", "01:6D",
 // nRF Connect's "(0x) 01-6D-50", line breaks. On failure: nullopt and `error`
 // names the character and its position, or the token with an odd digit count.
 std::optional<byte_vector> parse_hex_text(std::string_view text, std::string& error);

@@ -152,9 +152,13 @@ check(rc == 0 and out.startswith("buwizz3 charger_settings"), f"--direction=noti
 # ---- hex spellings (one argument or several, line breaks)
 for spelling in [["30 7F 81 00 40 C0 01 21 3F"], ["307f810040c001213f"], ["0x30,0x7F,0x81,0x00,0x40,0xC0,0x01,0x21,0x3F"],
                  ["30-7F-81-00-40-C0-01-21-3F"], ["(0x) 30-7F-81-00-40-C0-01-21-3F"], ["30:7F:81:00:40:C0:01:21:3F"],
-                 ["30 7F 81\n00 40 C0\r\n01 21 3F\n"], "30 7F 81 00 40 C0 01 21 3F".split(), ["0x307F8100", "40C0", "01:21:3F"]]:
+                 ["30 7F 81\n00 40 C0\r\n01 21 3F\n"], "30 7F 81 00 40 C0 01 21 3F".split(), ["0x307F8100", "40C0", "01:21:3F"],
+                 ["0x30,0x7F,0x81,0x0,0x40,0xC0,0x1,0x21,0x3F"], ["0x30 0x7f 0x81 0x0 0x40 0xc0 0x1 0x21 0x3f"]]:
     rc, out, err = run("decode", "buwizz3", *spelling)
     check(rc == 0 and out.startswith("buwizz3 set_motor_data"), f"hex spelling {spelling}: {rc} {err!r}")
+rc, out, err = run("decode", "buwizz3", "0x30,0x1,0xF,0x0,0x0,0x0,0x0,0x3,0x0", "--json")
+check(rc == 0 and parse_json(out).get("fields", {}).get("power") == [1, 15, 0, 0, 0, 0] and
+      parse_json(out)["fields"].get("brake_flags") == 3, f"0x1 is one byte 01: {rc} {out!r} {err!r}")
 # nRF Connect's copy of a status notification, no --direction
 status_hex = ("01 6D 50 0A 14 1E 28 32 C8 23 F0 FF F0 7F 00 08 0B 0C 0D 0E 0F 7D 30 EC 4C FF 60 79 FE FF 31 64 B3 00 40 E2 01 00 "
               "4B FF 01 00 01 00 00 00 4C 7F FF FF FF FF FF 7F 00 00 00 3F 00 00 20 C0 00 00 4C 41 F9 2A")
@@ -163,7 +167,8 @@ check(rc == 0 and out.startswith("buwizz3 status"), f"nRF Connect status: {rc} {
 # bad hex: the character and its position (counted from 0 in the arguments joined by one space)
 for args, text in [(["hello"], "'h' at character 0 is not a hex digit"), (["30 7G"], "'G' at character 4"),
                    (["30", "7G"], "'G' at character 4"), (["3 2 1 9"], "odd number of hex digits in \"3\" at character 0"),
-                   (["307"], "odd number of hex digits in \"307\""), (["FF AA 0G"], "'G' at character 7")]:
+                   (["307"], "odd number of hex digits in \"307\""), (["FF AA 0G"], "'G' at character 7"),
+                   (["0x30,0x1,0x123"], "odd number of hex digits in \"0x123\" at character 9"), (["0x"], "\"0x\" at character 0")]:
     rc, out, err = run("decode", "buwizz3", *args)
     check(rc == 1 and "bad hex" in err and text in err and len(err.strip().splitlines()) == 1, f"bad hex {args}: {rc} {err!r}")
 
@@ -225,7 +230,7 @@ check('payload (text)  {"a":1}' in out and "payload         7B 22 61 22 3A 31 7D
 # ---- sign-magnitude NAVBOT frames: 0x8A is -118 to the robot (out of range), -10 in the document's spelling
 rc, out, err = run("decode", "navbot", "55 AA 10 00 00 00 00 8A 00 01 00 00 00 00 00 00 00 00 00 00")
 check(rc == 1 and "value out of range at byte 7: maneuver.pitch" in err and "-100..100" in err and "0x8A = -118" in err
-      and "0x8A = -10" in err, f"sign-magnitude hint: {err!r}")
+      and "0x8A = -10" in err and "maneuver.pitch = -118 (0x8A)" in err, f"sign-magnitude hint: {err!r}")
 rc, out, err = run("decode", "navbot", "55 AA 10 00 00 00 00 B2 00 01 00 00 00 00 00 00 00 00 00 00", "--json")
 doc = parse_json(out)
 check(rc == 0 and doc.get("fields", {}).get("pitch") == -78 and any("0xB2 = -50" in n for n in doc.get("notes", [])),
@@ -240,7 +245,16 @@ BAD = [
     (["decode", "buwizz3", "37 04"], 1, ["value is not a valid code at byte 1", "set_accel_lpf.setting", "hz_0_781", "hz_100"]),
     (["decode", "buwizz3", "01" + " 00" * 60], 1, ["status is 54 or 68-129 bytes, 61 given"]),
     (["decode", "navbot", "55 AA 10 00 00 00 00 00 8A 00 01 00 00 00 00 00 00 00 00 00 00 00"], 1, ["transcription error"]),
-    (["decode", "osp", "FF AA 02 14 01 00 00 00 55 00"], 1, ["bad trailer byte at byte 9"]),
+    (["decode", "osp", "FF AA 02 14 01 00 00 00 55 00"], 1, ["bad trailer byte at byte 9: 0x00, expected 0x77", "status (DEV 02 CMD 14)"]),
+    (["decode", "osp", "FF AB 02 12 01 00 00 00 55 77"], 1, ["bad header byte at byte 1: 0xAB, expected 0xAA", "voltage (DEV 02 CMD 12)"]),
+    (["decode", "osp", "00 AA 02 12 01 00 00 00 55 77"], 1, ["bad header byte at byte 0: 0x00, expected 0xFF"]),
+    (["decode", "osp", "FF AA 02 12 01 00 00 00 56 77"], 1, ["bad trailer byte at byte 8: 0x56, expected 0x55"]),
+    (["decode", "osp", "FF AA 03 01 01 00 00 00 55 76"], 1, ["0x76, expected 0x77", "DEV 03 CMD 01 (no such message)"]),
+    # signed values in signed decimal (with the byte), unsigned in decimal, enum codes in hex
+    (["decode", "buwizz3", "30 00 00 00 00 00 80 00 00"], 1, ["set_motor_data.power[5] = -128 (0x80), valid -127..127"]),
+    (["decode", "navbot", "55 AA 10 00 00 00 00 65 00 01 00 00 00 00 00 00 00 00 00 00"], 1, ["maneuver.pitch = 101 (0x65)"]),
+    (["decode", "buwizz3", "32 0A"], 1, ["set_data_period.period_ms = 10 (0x0A)"]),
+    (["decode", "buwizz3", "37 04"], 1, ["set_accel_lpf.setting = 0x04"]),
     (["decode", "osp", "FF AA 03 01 0A 0B 0C 0D 55 77"], 1, ["DEV 03 CMD 01 params 0A 0B 0C 0D"]),
     (["encode", "buwizz3", "set_motor_data", "power=-128,0,0,0,0,0"], 1, ["value out of range at byte 1", "power[0]=-128", "-127..127"]),
     (["encode", "buwizz3", "set_motor_data", "power=0,300,0,0,0,0"], 1, ["value out of range at byte 2", "power[1]=300"]),
