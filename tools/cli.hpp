@@ -4,6 +4,7 @@
 //   describe.hpp   templates over the library's tables (fields, lengths, errors, encode)
 //   buwizz3.cpp, navbot.cpp, osp.cpp   one protocol each, driven by its std::variant of messages
 //   buwizz3_encode.cpp                  BuWizz3's encoders (a translation unit of their own: compile time)
+//   logs.cpp       hex lines and nRF Connect logs, line by line (decode --file, scan buwizz3|navbot)
 //   main.cpp       commands and options (CLI11), scan and monitor
 #pragma once
 
@@ -94,6 +95,16 @@ const protocol& osp_protocol();
 // Every protocol, in `list` order (protocols.cpp); nullptr for an unknown name.
 std::span<const protocol* const> protocols();
 const protocol* find_protocol(std::string_view name);
+
+// ---- logs.cpp: text input line by line (hex lines, nRF Connect logs of Android and desktop)
+enum class link_direction { unknown, host_to_device, device_to_host };
+// Text rather than binary (no control byte but tab, CR and LF)?
+bool looks_like_text(std::span<const std::uint8_t> data);
+// Decodes every line of `text` that holds a frame, with `p` (nullptr: the
+// characteristic UUID of each line picks the protocol). decode: results on
+// stdout, errors and a summary on stderr. scan: errors on stdout too, NAVBOT
+// messages reassembled, counters last. `name` names the input in messages.
+int decode_lines(const protocol* p, std::string_view name, std::string_view text, bool json, direction forced, bool scan);
 
 // ---- more subcommands
 // Adds `robowire dissector <protocol> [--output DIR]` (dissector_command.cpp).
