@@ -7,6 +7,7 @@
 #include <robowire/navbot/frame.hpp>
 #include <robowire/navbot/multiframe.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <map>
@@ -294,10 +295,25 @@ public:
                 return exit_usage;
             }
         }
+        // With a protocol given: values of characteristics robowire does not know are
+        // decoded with it when no line carries one of that protocol's own UUIDs (a
+        // device with other UUIDs); otherwise they are other characteristics, skipped.
+        if (p_) {
+            decode_unknown_ = true;
+            for (const auto& [num, pl] : lines) {
+                if (pl.uuid.empty()) continue;
+                const auto k = protocol_of_uuid(pl.uuid);
+                if (k && k->p == p_) decode_unknown_ = false;
+            }
+        }
         for (auto& [num, pl] : lines) line(num, pl);
         if (c_.frames == 0 && c_.errors == 0) {
+            std::string others;
+            for (const auto& u : other_uuids_) others += (others.empty() ? ": " : ", ") + u;
             const std::string why = "no frame in " + name_ + ": " + std::to_string(n) + (n == 1 ? " line" : " lines") + " (read as " + source_ +
-                                    (c_.other ? "; " + std::to_string(c_.other) + " values of other characteristics" : "") + ")";
+                                    (c_.other ? "; " + std::to_string(c_.other) +
+                                                     (c_.other == 1 ? " value of another characteristic" : " values of other characteristics") + others
+                                               : "") + ")";
             if (json_) out_line(dump({{"type", "error"}, {"error", why}}));
             err_line("error: " + why);
             return exit_bad_input;
@@ -323,12 +339,15 @@ private:
         const protocol* p = p_;
         if (!pl.uuid.empty()) {
             const auto k = protocol_of_uuid(pl.uuid);
-            if (!k || (p_ && k->p != p_)) {  // another characteristic (device name, battery, a port's UART...)
+            // another characteristic (device name, battery, a port's UART...)
+            if ((!k && !decode_unknown_) || (k && p_ && k->p != p_)) {
                 ++c_.other;
                 --c_.frames;
+                if (other_uuids_.size() < 3 && std::find(other_uuids_.begin(), other_uuids_.end(), pl.uuid) == other_uuids_.end())
+                    other_uuids_.push_back(pl.uuid);
                 return;
             }
-            p = k->p;
+            if (k) p = k->p;
         }
         if (!p) {
             fail(num, pl, nullptr,
@@ -489,6 +508,8 @@ private:
     int worst_ = exit_ok;
     std::string source_;
     std::map<link_direction, navbot_stream> streams_;
+    bool decode_unknown_ = false;
+    std::vector<std::string> other_uuids_;
 };
 
 }  // namespace

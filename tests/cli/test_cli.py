@@ -385,7 +385,16 @@ check([(d.get("type"), d.get("line"), d.get("direction"), d.get("message")) for 
       and docs[0].get("uuid") == APP and docs[0]["fields"].get("battery_voltage_raw") == 80
       and docs[2].get("bytes") == "30 80 00 00 00 00 00 00 00", f"Android log --json: {rc} {out!r}")
 rc, out, err = run("decode", "navbot", "--file", "-", stdin=android_log.encode())
-check(rc == 1 and "no frame in stdin: 25 lines" in err and "values of other characteristics" in err, f"navbot on a BuWizz3 log: {rc} {err!r}")
+check(rc == 1 and out == "" and "error: line 15: bad header byte at byte 0" in err and "other characteristics 6" in err,
+      f"navbot on a BuWizz3 log: the BuWizz3 characteristic's lines are skipped: {rc} {err!r}")
+# a device whose characteristic robowire does not know: decoded with the protocol given, skipped without one
+other_log = "I 09:00:00.000 Connected to D4:37:A1:0C:55:2E\n" \
+            "I 09:00:01.000 Data written to 0000ffe1-0000-1000-8000-00805f9b34fb, value: (0x) 32-32\n"
+rc, out, err = run("decode", "buwizz3", "--file", "-", stdin=other_log.encode())
+check(rc == 0 and out.startswith("line 2 (host to device): buwizz3 set_data_period"), f"unknown UUID, protocol given: {rc} {out!r} {err!r}")
+rc, out, err = run("decode", "--file", "-", stdin=other_log.encode())
+check(rc == 1 and "no frame in stdin: 2 lines" in err and "1 value of another characteristic: 0000ffe1-0000-1000-8000-00805f9b34fb" in err,
+      f"unknown UUID, no protocol: {rc} {err!r}")
 
 # nRF Connect for Desktop: the log file's "2026-...Z INFO Attribute value changed, handle: 0x10, value (0x): ..."
 # and the log panel's "11:44:40.906<TAB>Attribute value written, ...". A value the app writes comes twice (changed,
