@@ -43,7 +43,7 @@ std::string_view trim(std::string_view s) {
 
 // nRF Connect for Android: "I 13:40:29.880 message" (level letter, time with milliseconds).
 bool android_prefix(std::string_view s) {
-    if (s.size() < 15 || s[1] != ' ' || s[14] != ' ') return false;
+    if (s.size() < 15 || (s[1] != ' ' && s[1] != '\t') || (s[14] != ' ' && s[14] != '\t')) return false;
     if (std::string_view("VDIWEA").find(s[0]) == std::string_view::npos) return false;
     for (const std::size_t i : {2u, 3u, 5u, 6u, 8u, 9u, 11u, 12u, 13u})
         if (!is_digit(s[i])) return false;

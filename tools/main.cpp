@@ -122,7 +122,8 @@ int run_decode(const decode_options& opt) {
         bytes = std::move(raw);
     } else {
         if (!pp) {
-            err_line("error: decode needs a protocol: buwizz3, navbot or osp (robowire decode --help)");
+            err_line(opt.hex.empty() ? "error: decode needs a protocol and hex bytes, or --file (robowire decode --help)"
+                                     : "error: decode needs a protocol before the bytes: buwizz3, navbot or osp (robowire decode --help)");
             return exit_usage;
         }
         if (opt.hex.empty()) {
