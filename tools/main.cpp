@@ -1,5 +1,6 @@
 // robowire: decode, encode and describe BuWizz3, NAVBOT-ES02 and OSP frames
-// from the library's field tables; scan an OSP byte stream; watch a serial port.
+// from the library's field tables; decode logs line by line (logs.cpp); scan an
+// OSP byte stream; watch a serial port.
 // Commands and options: CLI11. Output: render.cpp (text or JSON lines).
 #include <CLI/CLI.hpp>
 #include <robowire/osp/scanner.hpp>
