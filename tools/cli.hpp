@@ -98,6 +98,8 @@ const protocol* find_protocol(std::string_view name);
 
 // ---- logs.cpp: text input line by line (hex lines, nRF Connect logs of Android and desktop)
 enum class link_direction { unknown, host_to_device, device_to_host };
+// One line of an nRF Connect log that carries a value (decode takes it as an argument too)?
+bool is_log_line(std::string_view text);
 // Text rather than binary (no control byte but tab, CR and LF)?
 bool looks_like_text(std::span<const std::uint8_t> data);
 // Decodes every line of `text` that holds a frame, with `p` (nullptr: the

@@ -262,8 +262,9 @@ public:
         // In an nRF Connect log, lines that are not log entries with a frame
         // (service lists, text) carry no frame; in a hex file every line is a frame.
         if (log) {
+            // other lines carry no frame, but for bare hex (a frame pasted in among the log)
             for (auto& [num, pl] : lines)
-                if (!pl.log) pl.kind = parsed_line::none;
+                if (!pl.log && pl.kind == parsed_line::bad) pl.kind = parsed_line::none;
             source_ = "nRF Connect log";
             for (const auto& [num, pl] : lines)
                 if (pl.log && !pl.source.empty()) source_ = pl.source + " log";
@@ -513,6 +514,12 @@ private:
 };
 
 }  // namespace
+
+bool is_log_line(std::string_view text) {
+    if (text.find('\n') != std::string_view::npos) return false;
+    const auto p = parse_line(text);
+    return p.log && p.kind != parsed_line::none;
+}
 
 bool looks_like_text(std::span<const std::uint8_t> data) {
     for (const std::uint8_t b : data)

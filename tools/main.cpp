@@ -122,9 +122,8 @@ int run_decode(const decode_options& opt) {
         err_line("read " + name + " as binary (" + std::to_string(raw.size()) + (raw.size() == 1 ? " byte)" : " bytes)"));
         bytes = std::move(raw);
     } else {
-        if (!pp) {
-            err_line(opt.hex.empty() ? "error: decode needs a protocol and hex bytes, or --file (robowire decode --help)"
-                                     : "error: decode needs a protocol before the bytes: buwizz3, navbot or osp (robowire decode --help)");
+        if (!pp && opt.hex.empty()) {
+            err_line("error: decode needs a protocol and hex bytes, or --file (robowire decode --help)");
             return exit_usage;
         }
         if (opt.hex.empty()) {
@@ -133,7 +132,13 @@ int run_decode(const decode_options& opt) {
         }
         std::string joined;
         for (const auto& a : opt.hex) joined += (joined.empty() ? "" : " ") + a;
+        // a line copied from an nRF Connect log: its value, direction and UUID
+        if (is_log_line(joined)) return decode_lines(pp, "the argument", joined, opt.json, direction_of(opt.direction), false);
         std::string error;
+        if (!pp) {
+            err_line("error: decode needs a protocol before the bytes: buwizz3, navbot or osp (robowire decode --help)");
+            return exit_usage;
+        }
         const auto b = parse_hex_text(joined, error);
         if (!b) {
             if (opt.json) out_line(render_json_error(error, {}));
