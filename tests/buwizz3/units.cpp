@@ -15,6 +15,12 @@ TEST_CASE("buwizz3: LPF setting <-> Hz", "[buwizz3][units]") {
     STATIC_REQUIRE(lpf_hz(lpf_setting::hz_0_781) == 0.781);
     STATIC_REQUIRE(lpf_hz(lpf_setting::hz_6_25) == 6.25);
     STATIC_REQUIRE(lpf_hz(lpf_setting::hz_100) == 100.0);
+    // every code's frequency, as the document's 0x37 table gives it
+    STATIC_REQUIRE(lpf_hz(lpf_setting::hz_1_563) == 1.563);
+    STATIC_REQUIRE(lpf_hz(lpf_setting::hz_3_125) == 3.125);
+    STATIC_REQUIRE(lpf_hz(lpf_setting::hz_12_5) == 12.5);
+    STATIC_REQUIRE(lpf_hz(lpf_setting::hz_25) == 25.0);
+    STATIC_REQUIRE(lpf_hz(lpf_setting::hz_50) == 50.0);
     STATIC_REQUIRE(lpf_from_hz(50.0).value() == lpf_setting::hz_50);
     STATIC_REQUIRE(lpf_from_hz(0.78).value() == lpf_setting::hz_0_781);
     STATIC_REQUIRE(lpf_from_hz(1.563).value() == lpf_setting::hz_1_563);
