@@ -44,6 +44,6 @@ if(ROBOWIRE_INSTALL)
       file(INSTALL DESTINATION \"\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_DATADIR}/robowire/wireshark\" TYPE FILE
            FILES ${ROBOWIRE_WIRESHARK_PLUGINS})
     else()
-      message(STATUS \"Not installing the Wireshark dissectors: not built\")
+      message(STATUS \"Not installing the Wireshark dissectors: not built (cmake --build first)\")
     endif()")
 endif()
