@@ -5,11 +5,13 @@ stack.py ELF CI_FILE ENTRY...  prints, per entry, the deepest path through the
 call graph (the sum of the frames along it) and the largest over all entries.
 Frames come from the compiler (static sizes); a callee outside the program's
 own code (libc: memcpy, memset, ...) is measured from its prologue in the
-linked ELF (pushed registers plus `sub sp`). An indirect call counts as the deepest
+linked ELF (pushed registers plus `sub sp`; RISC-V: `addi sp,sp,-N`; the
+objdump is $ROBOWIRE_OBJDUMP, default arm-none-eabi-objdump). An indirect call counts as the deepest
 path from any function of the program with no direct caller (the targets of
 function pointers, such as std::visit's visitors). A dynamic or
 unbounded frame, or recursion, is reported in a `note` line.
 """
+import os
 import re
 import subprocess
 import sys
@@ -41,7 +43,8 @@ def short(title):
 
 def external_frames(elf):
     """Stack of each function in the ELF from its prologue (push + sub sp)."""
-    out = subprocess.run(["arm-none-eabi-objdump", "-d", "--no-show-raw-insn", elf], capture_output=True,
+    objdump = os.environ.get("ROBOWIRE_OBJDUMP", "arm-none-eabi-objdump")
+    out = subprocess.run([objdump, "-d", "--no-show-raw-insn", elf], capture_output=True,
                          text=True, check=True).stdout
     frames, cur, seen = {}, None, 0
     for line in out.splitlines():
@@ -65,6 +68,10 @@ def external_frames(elf):
             frames[cur] += 4 * regs
             continue
         m = re.search(r"\bsub(?:\.w|s)?\s+sp,\s*(?:sp,\s*)?#(\d+)", line)
+        if m:
+            frames[cur] += int(m.group(1))
+            continue
+        m = re.search(r"\b(?:c\.)?addi(?:16sp)?\s+sp,\s*(?:sp,\s*)?-(\d+)", line)  # RISC-V
         if m:
             frames[cur] += int(m.group(1))
     return frames

@@ -4,6 +4,7 @@
 //   describe.hpp   templates over the library's tables (fields, lengths, errors, encode)
 //   buwizz3.cpp, navbot.cpp, osp.cpp   one protocol each, driven by its std::variant of messages
 //   buwizz3_encode.cpp                  BuWizz3's encoders (a translation unit of their own: compile time)
+//   logs.cpp       hex lines and nRF Connect logs, line by line (decode --file, scan buwizz3|navbot)
 //   main.cpp       commands and options (CLI11), scan and monitor
 #pragma once
 
@@ -28,7 +29,8 @@ using byte_vector = std::vector<std::uint8_t>;
 inline constexpr int exit_ok = 0, exit_bad_input = 1, exit_usage = 2;
 
 // ---- hex.cpp
-// Parses hex as users paste it: "01 6D", "016d50", "0x01,0x6D", "01-6D", "01:6D",
+// Parses hex as users paste it: "01 6D", "016d50", "0x01,0x6D", "0x1,0x6d" (one
+// digit after 0x is one byte), "01-6D", "01:6D",
 // nRF Connect's "(0x) 01-6D-50", line breaks. On failure: nullopt and `error`
 // names the character and its position, or the token with an odd digit count.
 std::optional<byte_vector> parse_hex_text(std::string_view text, std::string& error);
@@ -97,6 +99,18 @@ const protocol* find_protocol(std::string_view name);
 // ---- list_json.cpp
 // `list --json`: every protocol's tables (or the one named) as one JSON document (tools/schema.hpp).
 std::string list_json(std::string_view protocol);
+
+// ---- logs.cpp: text input line by line (hex lines, nRF Connect logs of Android and desktop)
+enum class link_direction { unknown, host_to_device, device_to_host };
+// One line of an nRF Connect log that carries a value (decode takes it as an argument too)?
+bool is_log_line(std::string_view text);
+// Text rather than binary (no control byte but tab, CR and LF)?
+bool looks_like_text(std::span<const std::uint8_t> data);
+// Decodes every line of `text` that holds a frame, with `p` (nullptr: the
+// characteristic UUID of each line picks the protocol). decode: results on
+// stdout, errors and a summary on stderr. scan: errors on stdout too, NAVBOT
+// messages reassembled, counters last. `name` names the input in messages.
+int decode_lines(const protocol* p, std::string_view name, std::string_view text, bool json, direction forced, bool scan);
 
 // ---- more subcommands
 // Adds `robowire dissector <protocol> [--output DIR]` (dissector_command.cpp).

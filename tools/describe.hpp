@@ -138,6 +138,10 @@ std::string valid_lengths() {
 struct location {
     std::string path;   // "pu_motors[1].position"
     std::string valid;  // "-180..179 (deg)"
+    std::size_t start = 0;  // the element's first byte (relative to the message)
+    wire_kind kind = wire_kind::u8;
+    bool is_enum = false;
+    unsigned lo = 0, width = 8;  // bits fields
 };
 template <class M>
 std::optional<location> locate(std::size_t offset) {
@@ -152,15 +156,59 @@ std::optional<location> locate(std::size_t offset) {
             path += "[" + std::to_string(inner / F::element_size) + "]";
             inner %= F::element_size;
         }
+        const std::size_t start = offset - inner;
         if constexpr (F::kind == wire_kind::record) {
-            if (auto sub = locate<element_of_t<F>>(inner)) found = location{path + "." + sub->path, sub->valid};
-            else found = location{path, {}};
+            if (auto sub = locate<element_of_t<F>>(inner)) {
+                found = *sub;
+                found->path = path + "." + sub->path;
+                found->start += start;
+            } else {
+                found = location{path, {}, start, F::kind};
+            }
         } else {
-            found = location{path, valid_of(f)};
+            found = location{path, valid_of(f), start, F::kind, F::is_enum};
+            if constexpr (F::kind == wire_kind::bits) {
+                found->lo = F::wire_type::lo;
+                found->width = F::wire_type::width;
+            }
         }
     });
     return found;
 }
+// The raw value of the field at `loc` in `in`, as an error shows it: integers in
+// decimal, signed ones signed, with their bytes ("-128 (0x80)", "300 (0x2C 0x01)");
+// a bits field's value with its byte; enum codes and other bytes in hex.
+inline std::string raw_value_text(const location& loc, std::span<const std::uint8_t> in, std::size_t offset) {
+    if (offset >= in.size()) return {};
+    std::size_t size = 0;
+    bool is_signed = false;
+    switch (loc.kind) {
+    case wire_kind::i8: is_signed = true; [[fallthrough]];
+    case wire_kind::u8: case wire_kind::bits: size = 1; break;
+    case wire_kind::i16le: is_signed = true; [[fallthrough]];
+    case wire_kind::u16le: size = 2; break;
+    case wire_kind::i32le: is_signed = true; [[fallthrough]];
+    case wire_kind::u32le: size = 4; break;
+    default: break;
+    }
+    if (loc.is_enum || size == 0 || loc.start != offset || offset + size > in.size()) return hex2(in[offset]);
+    std::uint64_t u = 0;
+    for (std::size_t k = 0; k < size; ++k) u |= std::uint64_t{in[offset + k]} << (8 * k);
+    const auto bytes = in.subspan(offset, size);
+    if (loc.kind == wire_kind::bits)
+        return std::to_string((u >> loc.lo) & ((1u << loc.width) - 1u)) + " (byte " + hex2(in[offset]) + ")";
+    std::string v;
+    if (is_signed) {
+        const std::uint64_t sign = std::uint64_t{1} << (8 * size - 1);
+        v = std::to_string(static_cast<std::int64_t>(u ^ sign) - static_cast<std::int64_t>(sign));
+    } else {
+        v = std::to_string(u);
+    }
+    std::string h;
+    for (const std::uint8_t b : bytes) h += (h.empty() ? "" : " ") + hex2(b);
+    return v + " (" + h + ")";
+}
+
 // "value out of range at byte 1: set_data_period.period_ms (valid 20..255 (ms))"
 template <class M>
 std::string describe_error(const robowire::error& e, std::string_view got = {}) {
@@ -199,7 +247,11 @@ std::string describe_decode_error(std::span<const std::uint8_t> in, const robowi
                 std::string(robowire::table_v<M>.name) + " is " + valid_lengths<M>() + ", " +
                 std::to_string(in.size()) + " given";
         else
-            s = describe_error<M>(e, e.offset < in.size() ? hex2(in[e.offset]) : std::string{});
+            s = describe_error<M>(e, [&] {
+                const auto loc = locate<M>(e.offset);
+                if (e.offset >= in.size()) return std::string{};
+                return loc ? raw_value_text(*loc, in, e.offset) : hex2(in[e.offset]);
+            }());
     });
     if (s.empty()) s = std::string(robowire::to_string(e.code)) + " at byte " + std::to_string(e.offset);
     return s;

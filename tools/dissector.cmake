@@ -38,5 +38,12 @@ add_custom_command(OUTPUT ${ROBOWIRE_WIRESHARK_PLUGINS}
   COMMENT "Generating the Wireshark dissectors")
 add_custom_target(robowire_wireshark_plugins ALL DEPENDS ${ROBOWIRE_WIRESHARK_PLUGINS})
 if(ROBOWIRE_INSTALL)
-  install(FILES ${ROBOWIRE_WIRESHARK_PLUGINS} DESTINATION ${CMAKE_INSTALL_DATADIR}/robowire/wireshark)
+  # Installed when they were built (install(FILES ... OPTIONAL) would leave an empty folder).
+  install(CODE "
+    if(EXISTS \"${ROBOWIRE_WIRESHARK_DIR}/robowire_osp.lua\")
+      file(INSTALL DESTINATION \"\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_DATADIR}/robowire/wireshark\" TYPE FILE
+           FILES ${ROBOWIRE_WIRESHARK_PLUGINS})
+    else()
+      message(STATUS \"Not installing the Wireshark dissectors: not built (cmake --build first)\")
+    endif()")
 endif()

@@ -49,9 +49,14 @@ std::optional<byte_vector> parse_hex_text(std::string_view text, std::string& er
             }
         }
         const std::size_t digits = end - d;
+        if (d != start && digits == 1) {  // "0x1": one byte, as C writes it
+            out.push_back(static_cast<std::uint8_t>(digit(text[d])));
+            i = end;
+            continue;
+        }
         if (digits == 0 || digits % 2 != 0) {
             error = "bad hex: odd number of hex digits in \"" + std::string(text.substr(start, end - start)) +
-                    "\" at character " + std::to_string(start) + " (each byte is two digits)";
+                    "\" at character " + std::to_string(start) + " (each byte is two hex digits, or one after 0x)";
             return std::nullopt;
         }
         for (std::size_t k = d; k < end; k += 2)

@@ -1,5 +1,6 @@
 // robowire: decode, encode and describe BuWizz3, NAVBOT-ES02 and OSP frames
-// from the library's field tables; scan an OSP byte stream; watch a serial port.
+// from the library's field tables; decode logs line by line (logs.cpp); scan an
+// OSP byte stream; watch a serial port.
 // Commands and options: CLI11. Output: render.cpp (text or JSON lines).
 #include <CLI/CLI.hpp>
 #include <robowire/osp/scanner.hpp>
@@ -91,28 +92,53 @@ struct decode_options {
     std::string direction;
     bool json = false, hex_file = false, binary_file = false;
 };
+direction direction_of(const std::string& name) {
+    return name == "command" ? direction::command : name == "notification" ? direction::notification : direction::any;
+}
+
 int run_decode(const decode_options& opt) {
-    const protocol& p = *find_protocol(opt.protocol);
+    const protocol* pp = opt.protocol.empty() ? nullptr : find_protocol(opt.protocol);
+    if (!opt.direction.empty() && pp && !pp->has_directions) {
+        err_line("error: --direction applies to buwizz3 only");
+        return exit_usage;
+    }
     byte_vector bytes;
     if (!opt.file.empty()) {
         if (!opt.hex.empty()) {
             err_line("error: give hex bytes or --file, not both");
             return exit_usage;
         }
-        input in;
-        const auto mode = opt.hex_file ? input_mode::hex : opt.binary_file ? input_mode::binary : input_mode::detect;
-        if (const int rc = read_input(opt.file, mode, in)) return rc;
-        err_line("read " + opt.file + " as " + input_kind(in.hex_text) + " (" + std::to_string(in.bytes.size()) +
-                 (in.bytes.size() == 1 ? " byte)" : " bytes)"));
-        bytes = std::move(in.bytes);
+        byte_vector raw;
+        if (const int rc = read_all(opt.file, raw)) return rc;
+        const std::string name = opt.file == "-" ? "stdin" : opt.file;
+        // text (hex lines, an nRF Connect log): every line that holds a frame
+        if (opt.hex_file || (!opt.binary_file && looks_like_text(raw)))
+            return decode_lines(pp, name, std::string_view(reinterpret_cast<const char*>(raw.data()), raw.size()), opt.json,
+                                direction_of(opt.direction), false);
+        if (!pp) {
+            err_line("error: a binary file holds one frame: give its protocol (robowire decode buwizz3 --file " + opt.file + ")");
+            return exit_usage;
+        }
+        err_line("read " + name + " as binary (" + std::to_string(raw.size()) + (raw.size() == 1 ? " byte)" : " bytes)"));
+        bytes = std::move(raw);
     } else {
+        if (!pp && opt.hex.empty()) {
+            err_line("error: decode needs a protocol and hex bytes, or --file (robowire decode --help)");
+            return exit_usage;
+        }
         if (opt.hex.empty()) {
             err_line("error: decode needs hex bytes or --file (robowire decode --help)");
             return exit_usage;
         }
         std::string joined;
         for (const auto& a : opt.hex) joined += (joined.empty() ? "" : " ") + a;
+        // a line copied from an nRF Connect log: its value, direction and UUID
+        if (is_log_line(joined)) return decode_lines(pp, "the argument", joined, opt.json, direction_of(opt.direction), false);
         std::string error;
+        if (!pp) {
+            err_line("error: decode needs a protocol before the bytes: buwizz3, navbot or osp (robowire decode --help)");
+            return exit_usage;
+        }
         const auto b = parse_hex_text(joined, error);
         if (!b) {
             if (opt.json) out_line(render_json_error(error, {}));
@@ -121,14 +147,7 @@ int run_decode(const decode_options& opt) {
         }
         bytes = *b;
     }
-    if (!opt.direction.empty() && !p.has_directions) {
-        err_line("error: --direction applies to buwizz3 only");
-        return exit_usage;
-    }
-    const direction d = opt.direction == "command"        ? direction::command
-                        : opt.direction == "notification" ? direction::notification
-                                                          : direction::any;
-    return report(p, p.decode(bytes, d), opt.json);
+    return report(*pp, pp->decode(bytes, direction_of(opt.direction)), opt.json);
 }
 
 // ---- encode
@@ -182,6 +201,20 @@ struct osp_printer {
                     input ? "; input read as " : "", input ? input : "");
     }
 };
+
+// scan buwizz3 / navbot: a BLE log has one frame per line.
+int run_scan_lines(const protocol& proto, const std::string& path, bool json, input_mode mode) {
+    byte_vector raw;
+    if (const int rc = read_all(path, raw)) return rc;
+    const std::string name = path == "-" ? "stdin" : path;
+    if (mode == input_mode::binary || (mode == input_mode::detect && !looks_like_text(raw))) {
+        err_line("error: scan " + std::string(proto.name) + " reads text, one frame per line (hex, or an nRF Connect log); " +
+                 name + " is binary");
+        return exit_bad_input;
+    }
+    return decode_lines(&proto, name, std::string_view(reinterpret_cast<const char*>(raw.data()), raw.size()), json,
+                        direction::any, true);
+}
 
 int run_scan(const std::string& path, bool json, input_mode mode) {
     osp_printer p;
@@ -276,14 +309,17 @@ int main(int argc, char** argv) {
 
     // decode
     decode_options dec_opt;
-    auto* dec = app.add_subcommand("decode", "decode one frame from hex bytes (any spelling) or a file");
-    dec->add_option("protocol", dec_opt.protocol, "buwizz3, navbot or osp")->required()->check(CLI::IsMember(names));
+    auto* dec = app.add_subcommand("decode", "decode a frame from hex bytes (any spelling), or every frame of a file or log");
+    dec->add_option("protocol", dec_opt.protocol,
+                    "buwizz3, navbot or osp (with --file, may be left out: each log line's characteristic UUID picks it)")
+        ->check(CLI::IsMember(names));
     dec->add_option("hex", dec_opt.hex, "bytes: \"01 6D\", 016D, 0x01,0x6D, 01-6D, 01:6D, (0x) 01-6D");
     dec->add_flag("--json", dec_opt.json, "one JSON object on stdout");
     dec->add_option("--direction", dec_opt.direction,
                     "BuWizz3: command or notification (default: what the command byte and length allow)")
         ->check(CLI::IsMember({"command", "notification"}));
-    dec->add_option("--file", dec_opt.file, "read the frame from a file (- for stdin), binary or hex text");
+    dec->add_option("--file", dec_opt.file,
+                    "read frames from a file (- for stdin): text line by line (hex, nRF Connect logs), or one binary frame");
     auto* dec_hex = dec->add_flag("--hex", dec_opt.hex_file, "the file is hex text");
     auto* dec_bin = dec->add_flag("--binary", dec_opt.binary_file, "the file is binary");
     dec_hex->excludes(dec_bin);
@@ -300,8 +336,9 @@ int main(int argc, char** argv) {
     // scan
     std::string scan_protocol, scan_path = "-";
     bool scan_json = false, scan_hex = false, scan_bin = false;
-    auto* scan = app.add_subcommand("scan", "find and decode OSP frames in a byte stream (binary or hex text)");
-    scan->add_option("protocol", scan_protocol, "osp")->required()->check(CLI::IsMember({"osp"}));
+    auto* scan = app.add_subcommand("scan", "osp: find and decode frames in a byte stream (binary or hex text); "
+                                            "buwizz3, navbot: every frame of a log, one per line, NAVBOT messages reassembled");
+    scan->add_option("protocol", scan_protocol, "osp, buwizz3 or navbot")->required()->check(CLI::IsMember(names));
     scan->add_option("file", scan_path, "file to read, - for stdin (default)");
     scan->add_flag("--json", scan_json, "JSON lines on stdout: messages, errors, counters (each with a \"type\")");
     auto* scan_hexf = scan->add_flag("--hex", scan_hex, "the input is hex text");
@@ -352,8 +389,11 @@ int main(int argc, char** argv) {
     }
     if (dec->parsed()) return run_decode(dec_opt);
     if (enc->parsed()) return run_encode(enc_protocol, enc_message, enc_values);
-    if (scan->parsed())
-        return run_scan(scan_path, scan_json, scan_hex ? input_mode::hex : scan_bin ? input_mode::binary : input_mode::detect);
+    if (scan->parsed()) {
+        const auto mode = scan_hex ? input_mode::hex : scan_bin ? input_mode::binary : input_mode::detect;
+        if (scan_protocol != "osp") return run_scan_lines(*find_protocol(scan_protocol), scan_path, scan_json, mode);
+        return run_scan(scan_path, scan_json, mode);
+    }
     if (mon->parsed()) return run_monitor(mon_opt);
     return exit_ok;  // an extra subcommand ran in its callback
 }

@@ -1,6 +1,8 @@
 // robowire/buwizz3.hpp - BuWizz3: commands, status report, advertising, UUIDs, units.
 #pragma once
 
+#include "core/config.hpp"  // first: the C++ version check
+
 #include "buwizz3/advertisement.hpp"
 #include "buwizz3/commands.hpp"
 #include "buwizz3/decode.hpp"

@@ -1,10 +1,11 @@
 // robowire/core.hpp - every core header.
 #pragma once
 
+#include "core/config.hpp"  // first: the C++ version check
+
 #include "core/advertising.hpp"
 #include "core/bits.hpp"
 #include "core/bytes.hpp"
-#include "core/config.hpp"
 #include "core/decode.hpp"
 #include "core/dispatch.hpp"
 #include "core/encode.hpp"

@@ -2,6 +2,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
 #include "check.hpp"
 
 using namespace robowire;
@@ -11,10 +15,21 @@ TEST_CASE("buwizz3: LPF setting <-> Hz", "[buwizz3][units]") {
     STATIC_REQUIRE(lpf_hz(lpf_setting::hz_0_781) == 0.781);
     STATIC_REQUIRE(lpf_hz(lpf_setting::hz_6_25) == 6.25);
     STATIC_REQUIRE(lpf_hz(lpf_setting::hz_100) == 100.0);
+    // every code's frequency, as the document's 0x37 table gives it
+    STATIC_REQUIRE(lpf_hz(lpf_setting::hz_1_563) == 1.563);
+    STATIC_REQUIRE(lpf_hz(lpf_setting::hz_3_125) == 3.125);
+    STATIC_REQUIRE(lpf_hz(lpf_setting::hz_12_5) == 12.5);
+    STATIC_REQUIRE(lpf_hz(lpf_setting::hz_25) == 25.0);
+    STATIC_REQUIRE(lpf_hz(lpf_setting::hz_50) == 50.0);
     STATIC_REQUIRE(lpf_from_hz(50.0).value() == lpf_setting::hz_50);
     STATIC_REQUIRE(lpf_from_hz(0.78).value() == lpf_setting::hz_0_781);
     STATIC_REQUIRE(lpf_from_hz(1.563).value() == lpf_setting::hz_1_563);
     STATIC_REQUIRE(lpf_from_hz(40.0).code() == errc::invalid_enum);
+    // the 1 % window: 6.30625 = 6.25 x 1.009 is 6.25 Hz, 6.32 (1.0112 x) is none
+    STATIC_REQUIRE(lpf_from_hz(6.30625).value() == lpf_setting::hz_6_25);
+    STATIC_REQUIRE(lpf_from_hz(6.32).code() == errc::invalid_enum);
+    STATIC_REQUIRE(lpf_from_hz(6.19).value() == lpf_setting::hz_6_25);  // 0.9904 x
+    STATIC_REQUIRE(lpf_from_hz(6.18).code() == errc::invalid_enum);     // 0.9888 x
     CHECK(lpf_from_hz(3.125).value() == lpf_setting::hz_3_125);
 }
 
@@ -25,8 +40,61 @@ TEST_CASE("buwizz3: ramp rate from seconds", "[buwizz3][units]") {
     STATIC_REQUIRE(ramp_rate_from_seconds(0.05).value() == 255);   // 256, clamped
     STATIC_REQUIRE(ramp_rate_from_seconds(100.0).value() == 1);    // 0.128, clamped
     STATIC_REQUIRE(ramp_rate_from_seconds(0.0).code() == errc::value_out_of_range);
+    // Each pins 7.8125 (= 1000 / 128) against a near miss: with 7.8 instead,
+    // 0.0503 s: 100 / 0.39234 = 254.88 -> 255, 0.1275 s: 100 / 0.9945 = 100.55 -> 101.
+    STATIC_REQUIRE(ramp_rate_from_seconds(0.0503).value() == 254);  // 100 / 0.39296875 = 254.47
+    STATIC_REQUIRE(ramp_rate_from_seconds(0.1275).value() == 100);  // 100 / 0.99609375 = 100.39
     STATIC_REQUIRE(ramp_seconds(100) == 0.128);
     STATIC_REQUIRE(ramp_seconds(0) == 0.0);
+}
+
+TEST_CASE("buwizz3: motor power from a percentage and back", "[buwizz3][units]") {
+    // The document: 0x7F (127) full forwards, 0x81 (-127) full backwards.
+    // raw = percent x 127 / 100, rounded half away from zero.
+    STATIC_REQUIRE(power_from_percent(100.0).value() == 127);
+    STATIC_REQUIRE(power_from_percent(-100.0).value() == -127);
+    STATIC_REQUIRE(power_from_percent(50.0).value() == 64);    // 63.5 (truncation: 63)
+    STATIC_REQUIRE(power_from_percent(-50.0).value() == -64);  // -63.5 (floor(x + 0.5): -63)
+    STATIC_REQUIRE(power_from_percent(99.0).value() == 126);   // 125.73 (x 128 / 100: 127)
+    STATIC_REQUIRE(power_from_percent(2.0).value() == 3);      // 2.54
+    STATIC_REQUIRE(power_from_percent(1.0).value() == 1);      // 1.27
+    STATIC_REQUIRE(power_from_percent(0.4).value() == 1);      // 0.508
+    STATIC_REQUIRE(power_from_percent(-0.4).value() == -1);
+    STATIC_REQUIRE(power_from_percent(0.3).value() == 0);      // 0.381
+    STATIC_REQUIRE(power_from_percent(0.0).value() == 0);
+    STATIC_REQUIRE(power_from_percent(100.01).error() == error{errc::value_out_of_range, 1});
+    STATIC_REQUIRE(power_from_percent(-100.01).code() == errc::value_out_of_range);
+    STATIC_REQUIRE(power_from_percent(std::numeric_limits<double>::quiet_NaN()).code() == errc::value_out_of_range);
+    // whole percentages in integers: the same values
+    STATIC_REQUIRE(power_from_percent(100).value() == 127);
+    STATIC_REQUIRE(power_from_percent(-100).value() == -127);
+    STATIC_REQUIRE(power_from_percent(50).value() == 64);
+    STATIC_REQUIRE(power_from_percent(-50).value() == -64);
+    STATIC_REQUIRE(power_from_percent(99).value() == 126);
+    STATIC_REQUIRE(power_from_percent(-2).value() == -3);
+    STATIC_REQUIRE(power_from_percent(1).value() == 1);
+    STATIC_REQUIRE(power_from_percent(50L).value() == 64);
+    STATIC_REQUIRE(power_from_percent(std::uint8_t{100}).value() == 127);
+    STATIC_REQUIRE(power_from_percent(101).code() == errc::value_out_of_range);
+    STATIC_REQUIRE(power_from_percent(-101).code() == errc::value_out_of_range);
+    STATIC_REQUIRE(power_from_percent(std::uint64_t{1} << 40).code() == errc::value_out_of_range);
+    STATIC_REQUIRE(power_from_percent(-(std::int64_t{1} << 40)).code() == errc::value_out_of_range);
+    // the inverse: raw x 100 / 127
+    STATIC_REQUIRE(percent_from_power(127) == 100.0);  // x 100 / 128: 99.22
+    STATIC_REQUIRE(percent_from_power(-127) == -100.0);
+    STATIC_REQUIRE(percent_from_power(0) == 0.0);
+    CHECK(percent_from_power(64) == Approx(50.3937007874));  // 6400 / 127
+    CHECK(percent_from_power(1) == Approx(0.7874015748));
+    // every whole percentage comes back within half a step (100 / 127 / 2 = 0.3937 %)
+    for (int p = -100; p <= 100; ++p) {
+        const double back = percent_from_power(power_from_percent(p).value());
+        CHECK(std::abs(back - p) <= 0.3938);
+        CHECK(power_from_percent(p).value() == power_from_percent(static_cast<double>(p)).value());
+    }
+    // into a command
+    set_motor_data m{};
+    m.power = {power_from_percent(100).value(), power_from_percent(-50).value(), 0, 0, 0, 0};
+    CHECK(robowire::encode(m).value() == test::hex("30 7F C0 00 00 00 00 00 00"));
 }
 
 TEST_CASE("buwizz3: current limits", "[buwizz3][units]") {

@@ -152,9 +152,13 @@ check(rc == 0 and out.startswith("buwizz3 charger_settings"), f"--direction=noti
 # ---- hex spellings (one argument or several, line breaks)
 for spelling in [["30 7F 81 00 40 C0 01 21 3F"], ["307f810040c001213f"], ["0x30,0x7F,0x81,0x00,0x40,0xC0,0x01,0x21,0x3F"],
                  ["30-7F-81-00-40-C0-01-21-3F"], ["(0x) 30-7F-81-00-40-C0-01-21-3F"], ["30:7F:81:00:40:C0:01:21:3F"],
-                 ["30 7F 81\n00 40 C0\r\n01 21 3F\n"], "30 7F 81 00 40 C0 01 21 3F".split(), ["0x307F8100", "40C0", "01:21:3F"]]:
+                 ["30 7F 81\n00 40 C0\r\n01 21 3F\n"], "30 7F 81 00 40 C0 01 21 3F".split(), ["0x307F8100", "40C0", "01:21:3F"],
+                 ["0x30,0x7F,0x81,0x0,0x40,0xC0,0x1,0x21,0x3F"], ["0x30 0x7f 0x81 0x0 0x40 0xc0 0x1 0x21 0x3f"]]:
     rc, out, err = run("decode", "buwizz3", *spelling)
     check(rc == 0 and out.startswith("buwizz3 set_motor_data"), f"hex spelling {spelling}: {rc} {err!r}")
+rc, out, err = run("decode", "buwizz3", "0x30,0x1,0xF,0x0,0x0,0x0,0x0,0x3,0x0", "--json")
+check(rc == 0 and parse_json(out).get("fields", {}).get("power") == [1, 15, 0, 0, 0, 0] and
+      parse_json(out)["fields"].get("brake_flags") == 3, f"0x1 is one byte 01: {rc} {out!r} {err!r}")
 # nRF Connect's copy of a status notification, no --direction
 status_hex = ("01 6D 50 0A 14 1E 28 32 C8 23 F0 FF F0 7F 00 08 0B 0C 0D 0E 0F 7D 30 EC 4C FF 60 79 FE FF 31 64 B3 00 40 E2 01 00 "
               "4B FF 01 00 01 00 00 00 4C 7F FF FF FF FF FF 7F 00 00 00 3F 00 00 20 C0 00 00 4C 41 F9 2A")
@@ -163,7 +167,8 @@ check(rc == 0 and out.startswith("buwizz3 status"), f"nRF Connect status: {rc} {
 # bad hex: the character and its position (counted from 0 in the arguments joined by one space)
 for args, text in [(["hello"], "'h' at character 0 is not a hex digit"), (["30 7G"], "'G' at character 4"),
                    (["30", "7G"], "'G' at character 4"), (["3 2 1 9"], "odd number of hex digits in \"3\" at character 0"),
-                   (["307"], "odd number of hex digits in \"307\""), (["FF AA 0G"], "'G' at character 7")]:
+                   (["307"], "odd number of hex digits in \"307\""), (["FF AA 0G"], "'G' at character 7"),
+                   (["0x30,0x1,0x123"], "odd number of hex digits in \"0x123\" at character 9"), (["0x"], "\"0x\" at character 0")]:
     rc, out, err = run("decode", "buwizz3", *args)
     check(rc == 1 and "bad hex" in err and text in err and len(err.strip().splitlines()) == 1, f"bad hex {args}: {rc} {err!r}")
 
@@ -225,7 +230,7 @@ check('payload (text)  {"a":1}' in out and "payload         7B 22 61 22 3A 31 7D
 # ---- sign-magnitude NAVBOT frames: 0x8A is -118 to the robot (out of range), -10 in the document's spelling
 rc, out, err = run("decode", "navbot", "55 AA 10 00 00 00 00 8A 00 01 00 00 00 00 00 00 00 00 00 00")
 check(rc == 1 and "value out of range at byte 7: maneuver.pitch" in err and "-100..100" in err and "0x8A = -118" in err
-      and "0x8A = -10" in err, f"sign-magnitude hint: {err!r}")
+      and "0x8A = -10" in err and "maneuver.pitch = -118 (0x8A)" in err, f"sign-magnitude hint: {err!r}")
 rc, out, err = run("decode", "navbot", "55 AA 10 00 00 00 00 B2 00 01 00 00 00 00 00 00 00 00 00 00", "--json")
 doc = parse_json(out)
 check(rc == 0 and doc.get("fields", {}).get("pitch") == -78 and any("0xB2 = -50" in n for n in doc.get("notes", [])),
@@ -240,7 +245,16 @@ BAD = [
     (["decode", "buwizz3", "37 04"], 1, ["value is not a valid code at byte 1", "set_accel_lpf.setting", "hz_0_781", "hz_100"]),
     (["decode", "buwizz3", "01" + " 00" * 60], 1, ["status is 54 or 68-129 bytes, 61 given"]),
     (["decode", "navbot", "55 AA 10 00 00 00 00 00 8A 00 01 00 00 00 00 00 00 00 00 00 00 00"], 1, ["transcription error"]),
-    (["decode", "osp", "FF AA 02 14 01 00 00 00 55 00"], 1, ["bad trailer byte at byte 9"]),
+    (["decode", "osp", "FF AA 02 14 01 00 00 00 55 00"], 1, ["bad trailer byte at byte 9: 0x00, expected 0x77", "status (DEV 02 CMD 14)"]),
+    (["decode", "osp", "FF AB 02 12 01 00 00 00 55 77"], 1, ["bad header byte at byte 1: 0xAB, expected 0xAA", "voltage (DEV 02 CMD 12)"]),
+    (["decode", "osp", "00 AA 02 12 01 00 00 00 55 77"], 1, ["bad header byte at byte 0: 0x00, expected 0xFF"]),
+    (["decode", "osp", "FF AA 02 12 01 00 00 00 56 77"], 1, ["bad trailer byte at byte 8: 0x56, expected 0x55"]),
+    (["decode", "osp", "FF AA 03 01 01 00 00 00 55 76"], 1, ["0x76, expected 0x77", "DEV 03 CMD 01 (no such message)"]),
+    # signed values in signed decimal (with the byte), unsigned in decimal, enum codes in hex
+    (["decode", "buwizz3", "30 00 00 00 00 00 80 00 00"], 1, ["set_motor_data.power[5] = -128 (0x80), valid -127..127"]),
+    (["decode", "navbot", "55 AA 10 00 00 00 00 65 00 01 00 00 00 00 00 00 00 00 00 00"], 1, ["maneuver.pitch = 101 (0x65)"]),
+    (["decode", "buwizz3", "32 0A"], 1, ["set_data_period.period_ms = 10 (0x0A)"]),
+    (["decode", "buwizz3", "37 04"], 1, ["set_accel_lpf.setting = 0x04"]),
     (["decode", "osp", "FF AA 03 01 0A 0B 0C 0D 55 77"], 1, ["DEV 03 CMD 01 params 0A 0B 0C 0D"]),
     (["encode", "buwizz3", "set_motor_data", "power=-128,0,0,0,0,0"], 1, ["value out of range at byte 1", "power[0]=-128", "-127..127"]),
     (["encode", "buwizz3", "set_motor_data", "power=0,300,0,0,0,0"], 1, ["value out of range at byte 2", "power[1]=300"]),
@@ -318,8 +332,162 @@ one_path = os.path.join(d, "frame.txt")
 with open(one_path, "w") as fh:
     fh.write("(0x) FF-AA-02-12-D2-04-00-00-55-77\n")
 rc, out, err = run("decode", "osp", f"--file={one_path}", "--json")
-check(rc == 0 and parse_json(out).get("message") == "voltage" and "as hex text" in err, f"decode --file hex text: {err!r}")
+check(rc == 0 and parse_json(out).get("message") == "voltage" and "read as hex lines" in err, f"decode --file hex text: {err!r}")
 shutil.rmtree(d)
+
+# ---- logs: decode --file and scan, line by line, with line numbers; nRF Connect logs as the apps write them
+# nRF Connect for Android (its log lines: level letter, time with milliseconds, then Nordic's BLE library's
+# "Notification received from <uuid>, value: (0x) 01-02", "Data written to <uuid>, value: ...",
+# "Data written to descr. <uuid>, ..."; service lists and other entries carry no frame).
+APP = "50052901-74fb-4481-88b3-9919b1676e93"  # BuWizz3 application characteristic
+status_dashes = status_hex.replace(" ", "-")
+android_log = "\n".join([
+    "nRF Connect, 2026-03-14",
+    "BuWizz (D4:37:A1:0C:55:2E)",
+    "V 10:12:03.117 Connecting to D4:37:A1:0C:55:2E...",
+    "D 10:12:03.118 gatt = device.connectGatt(autoConnect = false, TRANSPORT_LE, preferred PHY = LE 1M)",
+    "D 10:12:03.702 [Callback] Connection state changed with status: 0 and new state: CONNECTED (2)",
+    "I 10:12:03.702 Connected to D4:37:A1:0C:55:2E",
+    "V 10:12:03.731 Discovering services...",
+    "D 10:12:03.731 gatt.discoverServices()",
+    "I 10:12:04.310 Services discovered",
+    "V 10:12:04.340 Generic Access (0x1800)",
+    "- Device Name [R] (0x2A00)",
+    "Unknown Service (500592d1-74fb-4481-88b3-9919b1676e93)",
+    f"- Unknown Characteristic [N W] ({APP})",
+    "Client Characteristic Configuration (0x2902)",
+    "I 10:12:05.120 Read Response received from 00002a00-0000-1000-8000-00805f9b34fb, value: (0x) 42-75-57-69-7A-7A-33, \"BuWizz3\"",
+    "D 10:12:06.514 gatt.writeDescriptor(00002902-0000-1000-8000-00805f9b34fb, value=0x0100)",
+    "I 10:12:06.601 Data written to descr. 00002902-0000-1000-8000-00805f9b34fb, value: (0x) 01-00",
+    f"I 10:12:06.655 Notification received from {APP}, value: (0x) {status_dashes}",    # line 18
+    f"V 10:12:09.001 Writing characteristic {APP} (WRITE REQUEST)",
+    f"D 10:12:09.001 gatt.writeCharacteristic({APP}, value=0x307F810040C001213F)",
+    f"I 10:12:09.072 Data written to {APP}, value: (0x) 30-7F-81-00-40-C0-01-21-3F",  # line 21
+    f"I 10:12:09.300 Data written to {APP}, value: (0x) 30-80-00-00-00-00-00-00-00",  # line 22: -128
+    f"I 10:12:09.500 Notification received from {APP}, value: (0x) AC",               # line 23: charger_settings
+    f"I 10:12:09.600 Data written to {APP}, value: (0x) AC",                           # line 24: check_charger_settings
+    f"I 10:12:09.700 Data written to {APP}, value: (0x) 32-32, \"22\"",              # line 25: as text too
+]) + "\n"
+rc, out, err = run("decode", "--file", "-", stdin=android_log.encode())
+check(rc == 1 and "line 18 (device to host): buwizz3 status" in out and "line 21 (host to device): buwizz3 set_motor_data" in out
+      and "line 23 (device to host): buwizz3 charger_settings" in out
+      and "line 24 (host to device): buwizz3 check_charger_settings" in out
+      and "line 25 (host to device): buwizz3 set_data_period" in out and "period_ms  50 ms" in out
+      and "error: line 22: value out of range at byte 1: set_motor_data.power[0] = -128 (0x80)" in err
+      and "read as nRF Connect (Android) log: lines 25, frames 6, decoded 5, errors 1" in err
+      and "other characteristics 1" in err, f"Android log: {rc} {out!r} {err!r}")
+rc, out, err = run("decode", "buwizz3", "--file", "-", "--json", stdin=android_log.encode())
+docs = [parse_json(l) for l in out.splitlines()]
+check([(d.get("type"), d.get("line"), d.get("direction"), d.get("message")) for d in docs] ==
+      [("message", 18, "device_to_host", "status"), ("message", 21, "host_to_device", "set_motor_data"),
+       ("error", 22, "host_to_device", None), ("message", 23, "device_to_host", "charger_settings"),
+       ("message", 24, "host_to_device", "check_charger_settings"), ("message", 25, "host_to_device", "set_data_period")]
+      and docs[0].get("uuid") == APP and docs[0]["fields"].get("battery_voltage_raw") == 80
+      and docs[2].get("bytes") == "30 80 00 00 00 00 00 00 00", f"Android log --json: {rc} {out!r}")
+rc, out, err = run("decode", "navbot", "--file", "-", stdin=android_log.encode())
+check(rc == 1 and out == "" and "error: line 15: bad header byte at byte 0" in err and "other characteristics 6" in err,
+      f"navbot on a BuWizz3 log: the BuWizz3 characteristic's lines are skipped: {rc} {err!r}")
+# a log line given as the argument; a log with bare hex lines pasted in
+rc, out, err = run("decode", "buwizz3", f"I 10:12:09.700 Data written to {APP}, value: (0x) 32-32")
+check(rc == 0 and out.startswith("line 1 (host to device): buwizz3 set_data_period"), f"log line argument: {rc} {out!r} {err!r}")
+mixed = f"I 13:40:29.880 Notification received from {APP}, value: (0x) AC\n30 7F 81 00 40 C0 01 21 3F\n32 32\n"
+rc, out, err = run("decode", "--file", "-", "--json", stdin=mixed.encode())
+check(rc == 2 and "line 2: which protocol?" in err, f"mixed log without protocol: {rc} {err!r}")
+rc, out, err = run("decode", "buwizz3", "--file", "-", "--json", stdin=mixed.encode())
+check(rc == 0 and [(d.get("line"), d.get("message")) for d in map(parse_json, out.splitlines())] ==
+      [(1, "charger_settings"), (2, "set_motor_data"), (3, "set_data_period")], f"mixed log: {rc} {out!r} {err!r}")
+# a device whose characteristic robowire does not know: decoded with the protocol given, skipped without one
+other_log = "I 09:00:00.000 Connected to D4:37:A1:0C:55:2E\n" \
+            "I 09:00:01.000 Data written to 0000ffe1-0000-1000-8000-00805f9b34fb, value: (0x) 32-32\n"
+rc, out, err = run("decode", "buwizz3", "--file", "-", stdin=other_log.encode())
+check(rc == 0 and out.startswith("line 2 (host to device): buwizz3 set_data_period"), f"unknown UUID, protocol given: {rc} {out!r} {err!r}")
+rc, out, err = run("decode", "--file", "-", stdin=other_log.encode())
+check(rc == 1 and "no frame in stdin: 2 lines" in err and "1 value of another characteristic: 0000ffe1-0000-1000-8000-00805f9b34fb" in err,
+      f"unknown UUID, no protocol: {rc} {err!r}")
+
+# nRF Connect for Desktop: the log file's "2026-...Z INFO Attribute value changed, handle: 0x10, value (0x): ..."
+# and the log panel's "11:44:40.906<TAB>Attribute value written, ...". A value the app writes comes twice (changed,
+# then written): one frame, host to device. CCCD writes (01-00) carry no frame. No UUIDs: the protocol is needed.
+desktop_log = "\n".join([
+    "2026-03-14T10:14:58.102Z INFO Connecting to device",
+    "2026-03-14T10:14:58.870Z INFO Connected to device D4:37:A1:0C:55:2E: interval: 7.5ms, timeout: 4000ms, latency: 0",
+    "2026-03-14T10:15:01.004Z INFO Attribute value changed, handle: 0x11, value (0x): 01-00",
+    "2026-03-14T10:15:01.010Z INFO Attribute value written, handle: 0x11, value (0x): 01-00",
+    f"2026-03-14T10:15:02.331Z INFO Attribute value changed, handle: 0x10, value (0x): {status_dashes}",  # line 5
+    "2026-03-14T10:15:03.120Z INFO Attribute value changed, handle: 0x10, value (0x): 32-32",
+    "2026-03-14T10:15:03.127Z INFO Attribute value written, handle: 0x10, value (0x): 32-32",  # line 7
+]) + "\n"
+rc, out, err = run("decode", "--file", "-", stdin=desktop_log.encode())
+check(rc == 2 and out == "" and "line 5: which protocol?" in err and "attribute handles" in err
+      and len(err.strip().splitlines()) == 1, f"desktop log without protocol: {rc} {err!r}")
+rc, out, err = run("decode", "buwizz3", "--file", "-", stdin=desktop_log.encode())
+check(rc == 0 and "line 5 (device to host): buwizz3 status" in out and "line 7 (host to device): buwizz3 set_data_period" in out
+      and "line 6" not in out and "decoded 2, errors 0" in err and "nRF Connect (desktop) log" in err, f"desktop log: {rc} {out!r} {err!r}")
+panel = "11:44:40.906\tAttribute value changed, handle: 0x10, value (0x): 32-32\n11:44:40.911\tAttribute value written, handle: 0x10, value (0x): 32-32\n"
+rc, out, err = run("decode", "buwizz3", "--file", "-", "--json", stdin=panel.encode())
+check(rc == 0 and [(d.get("line"), d.get("direction"), d.get("handle")) for d in map(parse_json, out.splitlines())]
+      == [(2, "host_to_device", "0x10")], f"desktop log panel: {rc} {out!r}")
+
+# hex lines: one frame a line, comments and blank lines skipped, errors with their line numbers
+hex_lines = "# frames from a capture\n30 7F 81 00 40 C0 01 21 3F\n\n0x32,0x32\n32 0G\n33\n"
+rc, out, err = run("decode", "buwizz3", "--file", "-", stdin=hex_lines.encode())
+check(rc == 1 and out.startswith("line 2: buwizz3 set_motor_data") and "line 4: buwizz3 set_data_period" in out
+      and "error: line 5: bad hex: 'G' at character 4" in err and "error: line 6: input too short at byte 1: set_ramp_rates" in err
+      and "read as hex lines: lines 6, frames 4, decoded 2, errors 2" in err, f"hex lines: {rc} {out!r} {err!r}")
+rc, out, err = run("decode", "--file", "-", stdin=b"30 7F 81 00 40 C0 01 21 3F\n")
+check(rc == 2 and "line 1: which protocol?" in err, f"hex lines without protocol: {rc} {err!r}")
+rc, out, err = run("decode", "30", "7F")
+check(rc == 2 and "30" in err, f"decode without protocol: {rc} {err!r}")
+rc, out, err = run("decode", "osp", "--file", "-", stdin=b"# nothing\n\n")
+check(rc == 1 and "no frame in stdin: 2 lines" in err, f"no frame: {rc} {err!r}")
+
+# scan buwizz3: the same, errors in line on stdout, counters last
+rc, out, err = run("scan", "buwizz3", "-", stdin=android_log.encode())
+last = out.strip().splitlines()[-1]
+check(rc == 0 and "line 22: error: value out of range at byte 1" in out and last.startswith("lines 25, frames 6, decoded 5, errors 1")
+      and last.endswith("stdin read as nRF Connect (Android) log"), f"scan buwizz3: {rc} {last!r}")
+rc, out, err = run("scan", "buwizz3", "-", stdin=bytes.fromhex("30 7F 81 00 40 C0 01 21 3F"))
+check(rc == 1 and "reads text" in err and "binary" in err, f"scan buwizz3 binary: {rc} {err!r}")
+
+# scan navbot: multi-frame messages reassembled across lines, per direction (the robot echoes what it receives)
+NW, NN = "6e400012-b5a3-f393-e0a9-e50e24dcca9e", "6e400013-b5a3-f393-e0a9-e50e24dcca9e"
+def navbot_frames(text):  # the document's layout: 55 AA command remaining 00, 15 payload bytes, the last zero-padded
+    b = text.encode()
+    parts = [b[i:i + 15] for i in range(0, len(b), 15)]
+    return ["-".join(f"{x:02X}" for x in bytes([0x55, 0xAA, 0x02, len(parts) - 1 - i, 0]) + p + bytes(15 - len(p)))
+            for i, p in enumerate(parts)]
+a = navbot_frames('{"type":"get_device_info"}')                          # 26 bytes: 2 frames
+b = navbot_frames('{"type":"set_name","name":"NAVBOT-ES02 kitchen"}')  # 48 bytes: 4 frames
+w = lambda t, v: f"I 11:02:{t} Data written to {NW}, value: (0x) {v}"
+nt = lambda t, v: f"I 11:02:{t} Notification received from {NN}, value: (0x) {v}"
+navbot_log = "\n".join([
+    "nRF Connect, 2026-03-14", "NAVBOT-ES02 (C8:2E:18:4A:01:7F)", "I 11:02:00.100 Connected to C8:2E:18:4A:01:7F",
+    w("01.000", a[0]), w("01.040", a[1]),                       # lines 4-5: complete
+    nt("01.060", a[0]), nt("01.080", a[1]), nt("01.081", a[1]),  # lines 6-7 complete (echo), 8 duplicate
+    w("02.000", b[0]), w("02.040", b[1]), w("02.045", b[0]),     # 9, 10, 11: restarted
+    w("02.050", b[1]), w("02.060", b[2]), w("02.070", b[3]),     # 12-14: complete (lines 11-14)
+    w("03.000", b[0]), w("03.010", b[2]),                       # 15, 16: a frame lost
+    w("04.000", "55-AA-10-00-00-00-00-F6-00-01-00-00-00-00-00-00-00-00-00-00"),  # 17: maneuver pitch -10
+]) + "\n"
+rc, out, err = run("scan", "navbot", "-", stdin=navbot_log.encode())
+check(rc == 0 and 'line 5: navbot reassembly: message complete, 2 frames (lines 4-5), command 0x02, 26 bytes of JSON: {"type":"get_device_info"}' in out
+      and "line 7: navbot reassembly: message complete, 2 frames (lines 6-7)" in out
+      and "line 8: navbot reassembly: duplicate" in out and "line 11: navbot reassembly: the sender started the message over" in out
+      and 'line 14: navbot reassembly: message complete, 4 frames (lines 11-14), command 0x02, 48 bytes of JSON: {"type":"set_name","name":"NAVBOT-ES02 kitchen"}' in out
+      and "line 16: navbot reassembly: frame out of sequence at byte 3: remaining 1 after 3, frames were lost; "
+          "the partial message (line 15) is dropped" in out
+      and "line 17 (host to device): navbot maneuver" in out and "pitch     -10 %" in out
+      and "messages reassembled 3, duplicates 1, restarted 1" in out and "reassembly errors 1" in out, f"scan navbot: {rc} {out!r}")
+rc, out, err = run("scan", "navbot", "-", "--json", stdin=navbot_log.encode())
+docs = [parse_json(l) for l in out.splitlines()]
+re_ = [(d["line"], d["outcome"]) for d in docs if d.get("type") == "reassembly"]
+check(re_ == [(4, "need_more"), (5, "complete"), (6, "need_more"), (7, "complete"), (8, "duplicate"), (9, "need_more"),
+              (10, "need_more"), (11, "restarted"), (12, "need_more"), (13, "need_more"), (14, "complete"), (15, "need_more"),
+              (16, "error")]
+      and [d for d in docs if d.get("outcome") == "complete"][2].get("lines") == [11, 12, 13, 14]
+      and [d for d in docs if d.get("outcome") == "complete"][0].get("text") == '{"type":"get_device_info"}'
+      and docs[-1].get("type") == "counters" and docs[-1].get("messages_reassembled") == 3 and docs[-1].get("frames") == 14,
+      f"scan navbot --json: {re_} {docs[-1]}")
 
 # ---- monitor: a real pseudo-terminal pair from socat, a writer sending frames mixed with noise
 def monitor(json_mode):

@@ -1,6 +1,8 @@
 // robowire/buwizz3/advertisement.hpp - recognise a BuWizz3 in BLE advertising data.
 #pragma once
 
+#include "../core/config.hpp"  // first: the C++ version check
+
 #include <array>
 #include <cstdint>
 #include <optional>

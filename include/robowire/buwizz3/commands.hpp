@@ -4,6 +4,8 @@
 // units.hpp converts.
 #pragma once
 
+#include "../core/config.hpp"  // first: the C++ version check
+
 #include <array>
 #include <cstdint>
 #include <optional>

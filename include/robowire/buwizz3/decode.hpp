@@ -1,6 +1,8 @@
 // robowire/buwizz3/decode.hpp - decode any command or notification into a variant.
 #pragma once
 
+#include "../core/config.hpp"  // first: the C++ version check
+
 #include <span>
 #include <variant>
 

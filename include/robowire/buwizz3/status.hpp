@@ -3,6 +3,8 @@
 // PID state block (after 0x51 enable_pid_reporting).
 #pragma once
 
+#include "../core/config.hpp"  // first: the C++ version check
+
 #include <array>
 #include <cstddef>
 #include <cstdint>

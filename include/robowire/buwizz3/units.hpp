@@ -2,8 +2,12 @@
 // command values, and the document's PID presets.
 #pragma once
 
+#include "../core/config.hpp"  // first: the C++ version check
+
 #include <cstdint>
 #include <numbers>
+#include <type_traits>
+#include <utility>
 
 #include "commands.hpp"
 #include "status.hpp"
@@ -32,6 +36,29 @@ constexpr result<lpf_setting> lpf_from_hz(double hz) noexcept {
     }
     return fail(errc::invalid_enum, 1);
 }
+
+// 0x30 / 0x31 motor power: raw -127..127, 127 (0x7F) full forwards, -127
+// (0x81) full backwards, as the document gives them; so a positive percentage
+// is forwards. raw = percent x 127 / 100, rounded half away from zero:
+// 100 % -> 127, 50 % -> 63.5 -> 64, -50 % -> -64, 1 % -> 1.27 -> 1.
+// Outside -100..100 (or NaN): value_out_of_range (offset 1, the first power byte).
+constexpr result<std::int8_t> power_from_percent(double percent) noexcept {
+    if (!(percent >= -100.0 && percent <= 100.0)) return fail(errc::value_out_of_range, 1);
+    const double raw = percent * 127.0 / 100.0;
+    return static_cast<std::int8_t>(raw < 0.0 ? raw - 0.5 : raw + 0.5);
+}
+// The same for whole percentages, in integers (no floating point is linked).
+template <class Int>
+    requires std::is_integral_v<Int>
+constexpr result<std::int8_t> power_from_percent(Int percent) noexcept {
+    if (std::cmp_less(percent, -100) || std::cmp_greater(percent, 100)) return fail(errc::value_out_of_range, 1);
+    const int p = static_cast<int>(percent);
+    const int magnitude = ((p < 0 ? -p : p) * 127 + 50) / 100;
+    return static_cast<std::int8_t>(p < 0 ? -magnitude : magnitude);
+}
+// The inverse: percent of full power, raw x 100 / 127 (127 -> 100 %, 64 -> 50.39 %,
+// -127 -> -100 %). -128 is no valid power (-100.79 %).
+constexpr double percent_from_power(std::int8_t raw) noexcept { return raw * 100.0 / 127.0; }
 
 // 0x33: rate (% per 128 ms) for a full 0-100 % ramp in `seconds`:
 // 100 / (seconds x 7.8125), rounded, clamped to 1..255. seconds <= 0: value_out_of_range.

@@ -1,6 +1,8 @@
 // robowire/buwizz3/uuids.hpp - BuWizz3 GATT UUIDs: canonical strings and on-air bytes.
 #pragma once
 
+#include "../core/config.hpp"  // first: the C++ version check
+
 #include <cstdint>
 
 #include "../core/uuid.hpp"

@@ -2,6 +2,8 @@
 // structures (length, type, data) that stops cleanly at malformed lengths.
 #pragma once
 
+#include "config.hpp"  // first: the C++ version check
+
 #include <cstddef>
 #include <cstdint>
 #include <optional>

@@ -2,6 +2,8 @@
 // sign-magnitude int8.
 #pragma once
 
+#include "config.hpp"  // first: the C++ version check
+
 #include <cstdint>
 
 #include "result.hpp"

@@ -2,6 +2,8 @@
 // and hex formatting / parsing into caller-owned buffers.
 #pragma once
 
+#include "config.hpp"  // first: the C++ version check
+
 #include <array>
 #include <cstddef>
 #include <cstdint>

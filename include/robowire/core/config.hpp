@@ -6,8 +6,12 @@
 #else
 #define ROBOWIRE_CPLUSPLUS __cplusplus
 #endif
+// Every robowire header includes this file first, so that a C++17 build sees
+// this one message: the missing file below is a fatal error, which ends the
+// compilation before any C++20 code (g++ and clang++ go on after #error).
 #if ROBOWIRE_CPLUSPLUS < 202002L
 #error "robowire needs C++20 (-std=c++20)"
+#include <robowire needs C++20, compilation stopped>
 #endif
 #undef ROBOWIRE_CPLUSPLUS
 

@@ -1,6 +1,8 @@
 // robowire/core/decode.hpp - decode a message from bytes, driven by its table.
 #pragma once
 
+#include "config.hpp"  // first: the C++ version check
+
 #include <cstddef>
 #include <cstdint>
 #include <span>

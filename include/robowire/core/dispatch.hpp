@@ -2,6 +2,8 @@
 // choosing the alternative by the fixed byte at a key offset (the command).
 #pragma once
 
+#include "config.hpp"  // first: the C++ version check
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -9,7 +11,6 @@
 #include <string_view>
 #include <variant>
 
-#include "config.hpp"
 #include "decode.hpp"
 #include "encode.hpp"
 #include "table.hpp"

@@ -1,6 +1,8 @@
 // robowire/core/encode.hpp - encode a message to bytes, driven by its table.
 #pragma once
 
+#include "config.hpp"  // first: the C++ version check
+
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -13,7 +15,6 @@
 #include "table.hpp"
 
 namespace robowire {
-
 
 namespace detail {
 // Encodes m into out_data (at most out_size bytes) and sets `written`: the

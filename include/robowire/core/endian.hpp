@@ -3,6 +3,8 @@
 // run time on little-endian cores; see bytewise_v), usable in static_assert.
 #pragma once
 
+#include "config.hpp"  // first: the C++ version check
+
 #include <bit>
 #include <cstddef>
 #include <cstdint>

@@ -3,6 +3,8 @@
 // byte offset (name, bytes, valid range) for messages and logs.
 #pragma once
 
+#include "config.hpp"  // first: the C++ version check
+
 #include <cstddef>
 #include <cstdint>
 #include <limits>

@@ -4,6 +4,8 @@
 // (found by ADL) returning std::array<flag_bit, N>. No codec reads them.
 #pragma once
 
+#include "config.hpp"  // first: the C++ version check
+
 #include <array>
 #include <cstddef>
 #include <cstdint>

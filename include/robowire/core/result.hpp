@@ -4,6 +4,8 @@
 // if defined, then traps.
 #pragma once
 
+#include "config.hpp"  // first: the C++ version check
+
 #include <cstddef>
 #include <cstdint>
 #if defined(__cpp_exceptions)
@@ -13,8 +15,6 @@
 #include <string_view>
 #include <type_traits>
 #include <utility>  // std::in_place_t, std::move
-
-#include "config.hpp"
 
 namespace robowire {
 

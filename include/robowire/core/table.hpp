@@ -7,6 +7,8 @@
 // decode.hpp) are driven by it, so codec and table cannot disagree; tools read the same table.
 #pragma once
 
+#include "config.hpp"  // first: the C++ version check
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -15,7 +17,6 @@
 #include <utility>
 #include <type_traits>
 
-#include "config.hpp"
 #include "detail/check.hpp"
 #include "detail/field_list.hpp"
 #include "detail/traits.hpp"
@@ -23,7 +24,6 @@
 #include "wire.hpp"
 
 namespace robowire {
-
 
 // Physical unit: physical = raw * scale + offset. Empty name: no unit.
 struct unit {

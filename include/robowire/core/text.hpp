@@ -1,6 +1,8 @@
 // robowire/core/text.hpp - text<N>: up to N chars stored inline, NUL-padded on the wire.
 #pragma once
 
+#include "config.hpp"  // first: the C++ version check
+
 #include <array>
 #include <cstddef>
 #include <string_view>

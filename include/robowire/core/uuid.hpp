@@ -1,6 +1,8 @@
 // robowire/core/uuid.hpp - 128-bit UUIDs: canonical string and on-air byte order.
 #pragma once
 
+#include "config.hpp"  // first: the C++ version check
+
 #include <array>
 #include <cstddef>
 #include <cstdint>

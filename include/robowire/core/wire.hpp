@@ -2,10 +2,10 @@
 // (kind, width, bits), and the valid raw range of a field.
 #pragma once
 
+#include "config.hpp"  // first: the C++ version check
+
 #include <cstdint>
 #include <string_view>
-
-#include "config.hpp"
 
 namespace robowire {
 

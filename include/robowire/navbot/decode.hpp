@@ -1,6 +1,8 @@
 // robowire/navbot/decode.hpp - decode any NAVBOT frame into a variant.
 #pragma once
 
+#include "../core/config.hpp"  // first: the C++ version check
+
 #include <span>
 #include <variant>
 

@@ -1,6 +1,8 @@
 // robowire/navbot/frame.hpp - NAVBOT-ES02 20-byte frame, commands, BLE constants.
 #pragma once
 
+#include "../core/config.hpp"  // first: the C++ version check
+
 #include <array>
 #include <cstddef>
 #include <cstdint>

@@ -7,6 +7,8 @@
 // samples.
 #pragma once
 
+#include "../core/config.hpp"  // first: the C++ version check
+
 #include <cstdint>
 #include <span>
 

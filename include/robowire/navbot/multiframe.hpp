@@ -2,6 +2,8 @@
 // fragmenter (no copy, no heap) and a caller-owned reassembler.
 #pragma once
 
+#include "../core/config.hpp"  // first: the C++ version check
+
 #include <cstddef>
 #include <cstdint>
 #include <cstring>

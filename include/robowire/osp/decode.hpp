@@ -3,13 +3,14 @@
 // virtual calls.
 #pragma once
 
+#include "../core/config.hpp"  // first: the C++ version check
+
 #include <cstring>
 #include <optional>
 #include <span>
 #include <type_traits>
 #include <variant>
 
-#include "../core/config.hpp"
 #include "../core/dispatch.hpp"
 #include "messages.hpp"
 

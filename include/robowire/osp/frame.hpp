@@ -1,6 +1,8 @@
 // robowire/osp/frame.hpp - the OSP frame: FF AA DEV CMD P1 P2 P3 P4 55 77.
 #pragma once
 
+#include "../core/config.hpp"  // first: the C++ version check
+
 #include <array>
 #include <cstddef>
 #include <cstdint>

@@ -3,6 +3,8 @@
 // robowire::check_reserved<M>(bytes) reports them for a strict receiver.
 #pragma once
 
+#include "../core/config.hpp"  // first: the C++ version check
+
 #include <cstdint>
 #include <variant>
 #include <numbers>

@@ -1,6 +1,8 @@
 // robowire/osp/scanner.hpp - finds OSP frames in a noisy byte stream.
 #pragma once
 
+#include "../core/config.hpp"  // first: the C++ version check
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -9,7 +11,6 @@
 #include <type_traits>
 #include <span>
 
-#include "../core/config.hpp"
 #include "frame.hpp"
 
 namespace robowire::osp {

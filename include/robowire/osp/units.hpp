@@ -3,6 +3,8 @@
 // basis points) for cores without an FPU; double forms beside them.
 #pragma once
 
+#include "../core/config.hpp"  // first: the C++ version check
+
 #include <cstdint>
 #include <numbers>
 

@@ -2,12 +2,13 @@
 // bytes as compile-time constants, for the encoder and the decoder.
 #pragma once
 
+#include "../config.hpp"  // first: the C++ version check
+
 #include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <type_traits>
 
-#include "../config.hpp"
 #include "../table.hpp"
 
 namespace robowire::detail {

@@ -4,6 +4,8 @@
 // message type and, in the call it shows, the message and field names.
 #pragma once
 
+#include "../config.hpp"  // first: the C++ version check
+
 #include <cstddef>
 #include <cstdint>
 #include <string_view>

@@ -2,6 +2,8 @@
 // one inlined step per field; every offset and range is a template constant.
 #pragma once
 
+#include "../config.hpp"  // first: the C++ version check
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -13,7 +15,6 @@
 #include <utility>
 
 #include "../bits.hpp"
-#include "../config.hpp"
 #include "../endian.hpp"
 #include "../result.hpp"
 #include "../table.hpp"

@@ -2,6 +2,8 @@
 // two passes (check every field, then store them all).
 #pragma once
 
+#include "../config.hpp"  // first: the C++ version check
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -12,7 +14,6 @@
 #include <utility>
 
 #include "../bits.hpp"
-#include "../config.hpp"
 #include "../endian.hpp"
 #include "../result.hpp"
 #include "../table.hpp"

@@ -2,6 +2,8 @@
 // minimal tuple (get<I>, each, apply) that costs less to compile than std::tuple.
 #pragma once
 
+#include "../config.hpp"  // first: the C++ version check
+
 #include <cstddef>
 #include <utility>
 

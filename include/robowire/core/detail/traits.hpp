@@ -2,6 +2,8 @@
 // (optional, array, text, bytes) and whether it fits its wire type.
 #pragma once
 
+#include "../config.hpp"  // first: the C++ version check
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
