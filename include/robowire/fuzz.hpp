@@ -248,16 +248,22 @@ template <class... M>
 struct is_variant<std::variant<M...>> : std::true_type {};
 
 template <class T>
+constexpr T make(source& s, std::uint8_t bad) noexcept;
+
+// Alternative `index` of variant T, built in place (emplace of another
+// alternative than the first is not constexpr with every library).
+template <class T, std::size_t I = 0>
+constexpr T make_alternative(std::size_t index, source& s, std::uint8_t bad) noexcept {
+    if constexpr (I + 1 < std::variant_size_v<T>) {
+        if (index != I) return make_alternative<T, I + 1>(index, s, bad);
+    }
+    return T{std::in_place_index<I>, make<std::variant_alternative_t<I, T>>(s, bad)};
+}
+
+template <class T>
 constexpr T make(source& s, std::uint8_t bad) noexcept {
     if constexpr (is_variant<T>::value) {
-        constexpr std::size_t n = std::variant_size_v<T>;
-        const std::size_t index = s.integral_in_range<std::size_t>(0, n - 1);
-        T out{};
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (void)((index == I ? (out.template emplace<I>(make<std::variant_alternative_t<I, T>>(s, bad)), true) : false) ||
-                   ...);
-        }(std::make_index_sequence<n>{});
-        return out;
+        return make_alternative<T>(s.integral_in_range<std::size_t>(0, std::variant_size_v<T> - 1), s, bad);
     } else {
         T m{};
         make_fields(m, s, bad);
