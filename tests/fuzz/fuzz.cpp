@@ -9,7 +9,6 @@
 #include <cstdint>
 #include <set>
 #include <string>
-#include <vector>
 
 #include "check.hpp"
 #include "each_message.hpp"
@@ -152,7 +151,7 @@ TEST_CASE("fuzz::make: every message of every protocol encodes, and decodes back
         INFO(name);
         noise n;
         std::set<std::size_t> sizes;
-        std::set<std::vector<std::uint8_t>> distinct;
+        std::set<std::uint64_t> distinct;  // FNV-1a of each encoding
         for (int i = 0; i < 2000; ++i) {
             const auto in = n.block();
             fz::source s{in.data(), in.size()};
@@ -163,7 +162,9 @@ TEST_CASE("fuzz::make: every message of every protocol encodes, and decodes back
             REQUIRE(back);
             CHECK(test::same(robowire::encode(*back)->span(), wire->span()));
             sizes.insert(wire->size());
-            distinct.emplace(wire->begin(), wire->end());
+            std::uint64_t h = 0xcbf29ce484222325u;
+            for (const auto b : *wire) h = (h ^ b) * 0x100000001b3u;
+            distinct.insert(h);
         }
         CHECK(sizes.count(min_size_v<M>) == 1);  // optional blocks absent, shortest text and tail
         CHECK(sizes.count(max_size_v<M>) == 1);  // every optional block, longest text and tail
