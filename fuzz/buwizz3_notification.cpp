@@ -3,6 +3,8 @@
 
 #include "common.hpp"
 
+FUZZ_STRUCTURE_AWARE(robowire::buwizz3::notification)
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     namespace bw = robowire::buwizz3;
     const std::span<const std::uint8_t> in(data, size);

@@ -1,16 +1,32 @@
-// Shared by the fuzz harnesses: a byte reader, a table-driven message filler,
-// and a check that aborts with a message (libFuzzer reports it as a crash).
+// Shared by the fuzz harnesses: a byte reader, the round-trip check, and a
+// check that aborts with a message (libFuzzer reports it as a crash).
+// Messages are made from the input by <robowire/fuzz.hpp> (robowire::fuzz::make).
 #pragma once
 
 #include <robowire/core.hpp>
+#include <robowire/fuzz.hpp>
 
-#include <bit>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <span>
 #include <variant>
+
+// A decoder harness names its protocol's variant: FUZZ_STRUCTURE_AWARE(osp::message).
+// Built with -DROBOWIRE_FUZZ_STRUCTURE_AWARE (the fuzz_<name>_structure_aware
+// binaries of the harnesses marked `mutator` in fuzz/harnesses.txt), libFuzzer
+// mutates through robowire::fuzz::mutate, with LLVMFuzzerMutate as its byte-level fallback.
+#ifdef ROBOWIRE_FUZZ_STRUCTURE_AWARE
+#define FUZZ_STRUCTURE_AWARE(...)                                                                          \
+    extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size, std::size_t max_size); \
+    extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size, std::size_t max_size,   \
+                                                   unsigned int seed) {                                   \
+        return robowire::fuzz::mutate<__VA_ARGS__>(data, size, max_size, seed, LLVMFuzzerMutate);         \
+    }
+#else
+#define FUZZ_STRUCTURE_AWARE(...)
+#endif
 
 namespace fuzz {
 
@@ -36,71 +52,6 @@ struct reader {
     bool empty() const { return pos >= in.size(); }
     std::span<const std::uint8_t> rest() { auto r = in.subspan(pos < in.size() ? pos : in.size()); pos = in.size(); return r; }
 };
-
-template <class E>
-void fill_element(E& v, reader& r);
-
-template <class M>
-void fill(M& m, reader& r) {
-    robowire::for_each_field<M>([&](const auto& f) {
-        using F = std::remove_cvref_t<decltype(f)>;
-        auto& member = m.*f.member;
-        if constexpr (F::is_optional) {
-            if (r.byte() & 1) {
-                auto& v = member.emplace();
-                if constexpr (F::is_array) for (auto& e : v) fill_element(e, r);
-                else fill_element(v, r);
-            } else {
-                member.reset();
-            }
-        } else if constexpr (F::is_array) {
-            for (auto& e : member) fill_element(e, r);
-        } else {
-            fill_element(member, r);
-        }
-    });
-}
-
-template <class E>
-void fill_element(E& v, reader& r) {
-    if constexpr (std::is_same_v<E, bool>) {
-        v = r.byte() & 1;
-    } else if constexpr (std::is_enum_v<E>) {
-        v = static_cast<E>(r.byte());  // also invalid codes
-    } else if constexpr (std::is_same_v<E, float>) {
-        v = std::bit_cast<float>(r.integer<std::uint32_t>());  // any bit pattern, NaNs too
-    } else if constexpr (std::is_integral_v<E>) {
-        v = r.integer<E>();
-    } else if constexpr (requires { v.view(); }) {  // text<N>
-        char buf[64] = {};
-        const std::size_t n = r.byte() % (v.capacity() + 2);
-        for (std::size_t i = 0; i < n && i < sizeof buf; ++i) buf[i] = static_cast<char>(r.byte());
-        if (auto t = std::remove_cvref_t<E>::make(std::string_view(buf, n))) v = *t;
-    } else if constexpr (requires { v.push_back(std::uint8_t{}); }) {  // bytes<N>
-        v.clear();
-        const std::size_t n = r.byte() % (v.capacity() + 1);
-        for (std::size_t i = 0; i < n; ++i) (void)v.push_back(r.byte());
-    } else {
-        fill(v, r);  // record
-    }
-}
-
-// Fills the alternative chosen by the first input byte.
-template <class Variant, std::size_t I = 0>
-Variant pick(std::size_t index, reader& r) {
-    if constexpr (I + 1 == std::variant_size_v<Variant>) {
-        std::variant_alternative_t<I, Variant> m{};
-        fill(m, r);
-        return Variant{std::in_place_index<I>, m};
-    } else {
-        if (index == I) {
-            std::variant_alternative_t<I, Variant> m{};
-            fill(m, r);
-            return Variant{std::in_place_index<I>, m};
-        }
-        return pick<Variant, I + 1>(index, r);
-    }
-}
 
 inline bool same_bytes(std::span<const std::uint8_t> a, std::span<const std::uint8_t> b) {
     return robowire::equal_bytes(a, b);

@@ -3,6 +3,8 @@
 
 #include "common.hpp"
 
+FUZZ_STRUCTURE_AWARE(robowire::navbot::message)
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     namespace nb = robowire::navbot;
     const std::span<const std::uint8_t> in(data, size);

@@ -1,12 +1,18 @@
-// Structure-aware: OSP messages built from the input, encoded, decoded back.
+// Structure-aware: OSP messages made from the input (robowire::fuzz::make),
+// encoded, decoded back. First byte: bit 6 the near-valid form (a field out
+// of range now and then), and modulo the number of messages, which one.
+#include <robowire/fuzz.hpp>
 #include <robowire/osp.hpp>
 
 #include "common.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     namespace osp = robowire::osp;
-    fuzz::reader r{{data, size}};
-    const auto m = fuzz::pick<osp::message>(r.byte() % std::variant_size_v<osp::message>, r);
+    const bool near_valid = size > 0 && (data[0] & 0x40) != 0;
+    robowire::fuzz::source s{data, size};
+    const auto m = near_valid ? robowire::fuzz::make<osp::message>(s, robowire::fuzz::out_of_range{})
+                              : robowire::fuzz::make<osp::message>(s);
+    if (!near_valid) FUZZ_CHECK(robowire::encode(m).has_value());  // make draws inside every range
     fuzz::round_trip(m, [](auto in) { return osp::decode(in); });
     return 0;
 }

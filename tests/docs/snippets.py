@@ -2,7 +2,8 @@
 """Compiles every ```cpp block of README.md and docs/*.md with each compiler given
 (default: g++ and clang++) under the project's strict warning set.
 
-A block with its own main() is compiled as it is. Any other block is a
+A block with its own main() (or a fuzz harness's LLVMFuzzerTestOneInput) is
+compiled as it is. Any other block is a
 fragment: it goes into a function body after a prelude that includes robowire
 and declares the application's own functions and buffers the fragments use
 (send, write, adv_bytes, ...). Fragments show values a program would go on to
@@ -74,7 +75,7 @@ def sources():
 
 
 def translation_unit(rel, line, code):
-    if re.search(r"\bint\s+main\s*\(", code):
+    if re.search(r"\bint\s+main\s*\(|\bLLVMFuzzerTestOneInput\s*\(", code):  # a program, or a fuzz harness
         return f'#line {line} "{rel}"\n{code}', False
     if re.search(r"^\s*constexpr auto table_of\(", code, re.M):
         # Declarations (a message and its table), as they would sit in a protocol's namespace.
