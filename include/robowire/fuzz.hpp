@@ -11,6 +11,8 @@
 // (table_v), so a message added to a protocol is covered as it is.
 #pragma once
 
+#include "core/config.hpp"  // first: the C++ version check
+
 #include <array>
 #include <bit>
 #include <cstddef>
