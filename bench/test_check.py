@@ -81,6 +81,15 @@ code, out = gate(libc)
 expect(f"other libc implementations ({touched} variants): compared without libc, passes",
        touched > 0 and code == 0 and "libc differs" in out)
 
+renamed = copy.deepcopy(base)
+for variants in renamed["cases"].values():
+    for e in variants.values():
+        if e.get("libc_functions"):
+            e["libc_functions"] = ["0x00000000000a24c0"]  # no libc debug symbols: named by address
+code, out = gate(renamed)
+expect("libc functions named otherwise, same counts: compared whole, passes",
+       code == 0 and "libc differs" not in out)
+
 missing = copy.deepcopy(base)
 missing["cases"]["core.removed_case"] = {"robowire": {"instructions": 1.0, "estimated_cycles": 1.0}}
 code, out = gate(missing)
