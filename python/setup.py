@@ -40,7 +40,7 @@ extension = Pybind11Extension(
     extra_compile_args=flags,
     extra_link_args=["-s"],
     # any header changed: rebuild (setuptools compares these with the built module)
-    depends=[str(p) for p in sorted((here / "src").glob("*.hpp"))] + [str(root / "tools" / "schema.hpp")]
+    depends=[str(p) for p in sorted((here / "src").glob("*.hpp"))] + [str(root / "tools" / n) for n in ("schema.hpp", "text.hpp")]
     + [str(p) for p in sorted(include.rglob("*.hpp"))],
 )
 

@@ -16,6 +16,7 @@
 #include <variant>
 
 #include "cli.hpp"
+#include "text.hpp"
 
 namespace robowire::cli {
 
@@ -23,11 +24,6 @@ namespace robowire::cli {
 inline std::string number(double v) {
     char b[48];
     std::snprintf(b, sizeof b, "%.6g", v);
-    return b;
-}
-inline std::string hex2(unsigned v) {
-    char b[8];
-    std::snprintf(b, sizeof b, "0x%02X", v & 0xFFu);
     return b;
 }
 // Rounded to 15 significant digits (13.000000000000002 -> 13).
@@ -119,20 +115,6 @@ std::string flat_names(const std::string& prefix = {}) {
     return s;
 }
 
-// ---------------------------------------------------------------- lengths
-// Every input length M's decoder accepts: "1, 13 or 17 bytes", "54 or 68-129 bytes".
-template <class M>
-std::string valid_lengths() {
-    constexpr auto& runs = robowire::detail::length_runs_v<M>;
-    std::string s;
-    for (std::size_t i = 0; i < runs.count; ++i) {
-        if (i) s += i + 1 == runs.count ? " or " : ", ";
-        s += std::to_string(runs.run[i][0]);
-        if (runs.run[i][1] != runs.run[i][0]) s += "-" + std::to_string(runs.run[i][1]);
-    }
-    const bool one = runs.count == 1 && runs.run[0][0] == 1 && runs.run[0][1] == 1;
-    return s + (one ? " byte" : " bytes");
-}
 
 // ---------------------------------------------------------------- the field at a byte
 struct location {

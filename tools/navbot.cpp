@@ -5,24 +5,6 @@ namespace robowire::cli {
 namespace {
 namespace nb = robowire::navbot;
 
-// Signed channels read sign-magnitude (as the protocol document's samples write them).
-std::vector<std::string> sign_magnitude_notes(std::span<const std::uint8_t> in) {
-    std::vector<std::string> notes;
-    if (in.size() != nb::frame_size || in[2] != nb::command::maneuver) return notes;
-    robowire::for_each_field<nb::maneuver>([&](const auto& f) {
-        using F = std::remove_cvref_t<decltype(f)>;
-        if constexpr (F::kind == wire_kind::i8) {
-            const std::uint8_t b = in[f.offset];
-            if (b < 0x80) return;
-            const int twos = static_cast<int>(static_cast<std::int8_t>(b));
-            const int sm = -static_cast<int>(b & 0x7F);
-            notes.push_back(std::string(f.name) + " at byte " + std::to_string(f.offset) + " is " + hex2(b) + " = " +
-                            std::to_string(twos) + " (two's complement, what the robot reads); in the sign-magnitude "
-                            "spelling of the protocol document's samples " + hex2(b) + " = " + std::to_string(sm));
-        }
-    });
-    return notes;
-}
 
 outcome decode(std::span<const std::uint8_t> in, direction) {
     const auto r = nb::decode_frame(in);

@@ -17,11 +17,7 @@ PyObject* protocol() {
     return p;
 }
 
-std::string hex2(unsigned v) {
-    char b[8];
-    std::snprintf(b, sizeof b, "0x%02X", v & 0xFFu);
-    return b;
-}
+using robowire::cli::hex2;
 
 // The message of variant V whose command byte is `cmd`.
 struct candidate {
@@ -36,7 +32,7 @@ candidate by_command(std::uint8_t cmd, std::size_t len) {
         using M = typename decltype(t)::type;
         constexpr auto& tab = robowire::table_v<M>;
         if (c.found || tab.fixed[0].value != cmd) return;
-        c = {true, len >= tab.min_size() && len <= tab.max_input(), std::string(tab.name), lengths_text<M>()};
+        c = {true, len >= tab.min_size() && len <= tab.max_input(), std::string(tab.name), valid_lengths<M>()};
     });
     return c;
 }

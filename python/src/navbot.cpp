@@ -6,6 +6,7 @@
 
 #include "codec.hpp"
 #include "protocols.hpp"
+#include "text.hpp"
 
 namespace rwpy {
 namespace {
@@ -16,33 +17,7 @@ PyObject* protocol() {
     return p;
 }
 
-std::string hex2(unsigned v) {
-    char b[8];
-    std::snprintf(b, sizeof b, "0x%02X", v & 0xFFu);
-    return b;
-}
-
-// Signed maneuver channels with bit 7 set, read the way the protocol
-// document's samples write them (sign-magnitude), as the command-line tool notes them.
-std::vector<std::string> sign_magnitude_notes(std::span<const std::uint8_t> in) {
-    std::vector<std::string> notes;
-    if (in.size() != nb::frame_size || in[2] != nb::command::maneuver) return notes;
-    robowire::for_each_field<nb::maneuver>([&](const auto& f) {
-        using F = std::remove_cvref_t<decltype(f)>;
-        if constexpr (F::kind == wire_kind::i8) {
-            const std::uint8_t b = in[f.offset];
-            if (b < 0x80) return;
-            const int twos = static_cast<int>(static_cast<std::int8_t>(b));
-            const int sm = -static_cast<int>(b & 0x7F);
-            notes.push_back(std::string(f.name) + " at byte " + std::to_string(f.offset) + " is " + hex2(b) + " = " +
-                            std::to_string(twos) +
-                            " (two's complement, what the robot reads); in the sign-magnitude "
-                            "spelling of the protocol document's samples " +
-                            hex2(b) + " = " + std::to_string(sm));
-        }
-    });
-    return notes;
-}
+using robowire::cli::sign_magnitude_notes;  // the notes the command-line tool gives
 
 // The payload of a JSON frame as text (up to the first zero byte).
 std::string payload_text(const nb::frame& f) {
