@@ -10,6 +10,8 @@
 #include "core/dispatch.hpp"
 #include "core/encode.hpp"
 #include "core/endian.hpp"
+#include "core/fields.hpp"
+#include "core/flag_bits.hpp"
 #include "core/result.hpp"
 #include "core/table.hpp"
 #include "core/text.hpp"
