@@ -1,0 +1,76 @@
+#!/usr/bin/env python3
+"""Fails when a header under include/robowire/ is left out of an umbrella or
+of the single header, so that a new header cannot be forgotten:
+
+- core.hpp, buwizz3.hpp, navbot.hpp and osp.hpp each include every header of
+  their folder (core/detail/ is internal: the core headers include it);
+- robowire.hpp includes every other header of include/robowire/ (the four
+  umbrellas and fuzz.hpp), and through them reaches every header there;
+- scripts/amalgamate.py writes a section for every header.
+
+Usage: umbrellas.py   (run from anywhere)"""
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+INCLUDE = os.path.join(ROOT, "include")
+LOCAL = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+
+
+def rel(path):
+    return os.path.relpath(path, INCLUDE)
+
+
+def includes(path):
+    """The robowire headers a header includes directly, as paths under INCLUDE."""
+    with open(path, encoding="utf-8") as f:
+        return {rel(os.path.normpath(os.path.join(os.path.dirname(path), m))) for m in LOCAL.findall(f.read())}
+
+
+top = os.path.join(INCLUDE, "robowire")
+headers = sorted(rel(os.path.join(d, f)) for d, _, files in os.walk(top) for f in files if f.endswith(".hpp"))
+failures = []
+
+for umbrella in ("core", "buwizz3", "navbot", "osp"):
+    folder = os.path.join(top, umbrella)
+    direct = includes(os.path.join(top, umbrella + ".hpp"))
+    for h in sorted(rel(os.path.join(folder, f)) for f in os.listdir(folder) if f.endswith(".hpp")):
+        if h not in direct:
+            failures.append(f"robowire/{umbrella}.hpp does not include {h}")
+
+direct = includes(os.path.join(top, "robowire.hpp"))
+for h in headers:
+    if os.path.dirname(h) == "robowire" and h != "robowire/robowire.hpp" and h not in direct:
+        failures.append(f"robowire/robowire.hpp does not include {h}")
+
+reached, todo = set(), ["robowire/robowire.hpp"]
+while todo:
+    h = todo.pop()
+    if h not in reached:
+        reached.add(h)
+        todo += includes(os.path.join(INCLUDE, h))
+for h in headers:
+    if h not in reached:
+        failures.append(f"robowire/robowire.hpp does not reach {h}")
+
+with tempfile.TemporaryDirectory() as tmp:
+    out = os.path.join(tmp, "robowire.hpp")
+    r = subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "amalgamate.py"), out],
+                       capture_output=True, text=True)
+    if r.returncode != 0:
+        failures.append("scripts/amalgamate.py failed: " + (r.stderr or r.stdout).strip())
+    else:
+        with open(out, encoding="utf-8") as f:
+            sections = set(re.findall(r"^// ---- (robowire/\S+\.hpp)$", f.read(), re.M))
+        for h in headers:
+            if h not in sections:
+                failures.append(f"the single header (scripts/amalgamate.py) leaves out {h}")
+
+for line in failures:
+    print(line)
+if failures:
+    sys.exit(1)
+print(f"{len(headers)} headers under include/robowire/: every one in its umbrella, robowire.hpp and the single header")
