@@ -9,7 +9,12 @@ and declares the application's own functions and buffers the fragments use
 (send, write, adv_bytes, ...). Fragments show values a program would go on to
 use, so unused variables are not errors there; every other warning is.
 
-Usage: snippets.py [--list] [compiler...]   (run from anywhere)
+With --single-header FILE (the output of scripts/amalgamate.py), every
+`#include <robowire/...>` of the blocks and the prelude becomes an include of
+FILE, and include/ is left off the include path: each block then compiles
+against the single header alone.
+
+Usage: snippets.py [--list] [--single-header FILE] [compiler...]   (run from anywhere)
 """
 import os
 import re
@@ -84,6 +89,15 @@ def translation_unit(rel, line, code):
 
 
 def main(argv):
+    argv = list(argv)
+    single = None
+    if "--single-header" in argv:
+        i = argv.index("--single-header")
+        single = os.path.abspath(argv[i + 1])
+        del argv[i:i + 2]
+        if not os.path.isfile(single):
+            print(f"{single}: no such file (write it with scripts/amalgamate.py)")
+            return 1
     listing = "--list" in argv
     compilers = [a for a in argv if a != "--list"] or ["g++", "clang++"]
     snippets = list(sources())
@@ -99,12 +113,14 @@ def main(argv):
         jobs = []
         for i, (rel, line, code) in enumerate(snippets):
             tu, fragment = translation_unit(rel, line, code)
+            if single:
+                tu = re.sub(r"^\s*#\s*include\s*<robowire/[^>]+>", f'#include "{single}"', tu, flags=re.M)
             src = os.path.join(tmp, f"snippet{i}.cpp")
             with open(src, "w", encoding="utf-8") as f:
                 f.write(tu)
             for cxx in compilers:
-                cmd = [cxx, *STRICT, *(FRAGMENT_ONLY if fragment else []), "-I", os.path.join(ROOT, "include"),
-                       "-fsyntax-only", src]
+                include = [] if single else ["-I", os.path.join(ROOT, "include")]
+                cmd = [cxx, *STRICT, *(FRAGMENT_ONLY if fragment else []), *include, "-fsyntax-only", src]
                 jobs.append((cxx, rel, line, cmd))
         with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
             results = list(pool.map(lambda j: subprocess.run(j[3], capture_output=True, text=True), jobs))
@@ -114,7 +130,8 @@ def main(argv):
             if r.returncode != 0:
                 failures += 1
                 print(r.stderr[:4000])
-    print(f"{len(snippets)} snippets, {len(compilers)} compilers, {failures} failures")
+    against = f", against {single}" if single else ""
+    print(f"{len(snippets)} snippets, {len(compilers)} compilers{against}, {failures} failures")
     return 1 if failures else 0
 
 
