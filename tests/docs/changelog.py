@@ -1,0 +1,59 @@
+#!/usr/bin/env python3
+"""Fails when CHANGELOG.md and the version disagree (CONTRIBUTING.md,
+"Versions and releases"):
+
+- every section heading is `## X.Y.Z (unreleased)` or `## X.Y.Z (YYYY-MM-DD)`,
+  newest first, each version once, only the first one unreleased;
+- the first section's version is the one in CMakeLists.txt's project();
+- every tag vX.Y.Z of the repository (when it is a git checkout) has a dated
+  section.
+"""
+import os
+import re
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def version_key(v):
+    return tuple(int(x) for x in v.split("."))
+
+
+with open(os.path.join(ROOT, "CHANGELOG.md"), encoding="utf-8") as f:
+    headings = [line.rstrip("\n") for line in f if line.startswith("## ")]
+with open(os.path.join(ROOT, "CMakeLists.txt"), encoding="utf-8") as f:
+    m = re.search(r"project\(\s*robowire\s+VERSION\s+([0-9.]+)", f.read())
+project_version = m.group(1) if m else None
+
+failures = []
+sections = []
+for i, h in enumerate(headings):
+    m = re.fullmatch(r"## (\d+\.\d+\.\d+) \((unreleased|\d{4}-\d{2}-\d{2})\)", h)
+    if not m:
+        failures.append(f"CHANGELOG.md: heading '{h}' is not '## X.Y.Z (unreleased)' or '## X.Y.Z (YYYY-MM-DD)'")
+        continue
+    if m.group(2) == "unreleased" and i != 0:
+        failures.append(f"CHANGELOG.md: '{h}' is unreleased but not the first section")
+    sections.append((m.group(1), m.group(2)))
+versions = [v for v, _ in sections]
+if len(set(versions)) != len(versions):
+    failures.append("CHANGELOG.md: a version has two sections")
+if versions != sorted(versions, key=version_key, reverse=True):
+    failures.append("CHANGELOG.md: sections are not newest first: " + ", ".join(versions))
+if not sections:
+    failures.append("CHANGELOG.md: no section")
+elif sections[0][0] != project_version:
+    failures.append(f"CHANGELOG.md: the first section is {sections[0][0]}, CMakeLists.txt says {project_version}")
+
+tags = subprocess.run(["git", "-C", ROOT, "tag", "--list", "v*"], capture_output=True, text=True)
+dated = {v for v, d in sections if d != "unreleased"}
+for tag in tags.stdout.split() if tags.returncode == 0 else []:
+    if re.fullmatch(r"v\d+\.\d+\.\d+", tag) and tag[1:] not in dated:
+        failures.append(f"tag {tag} has no dated section in CHANGELOG.md")
+
+for line in failures:
+    print(line)
+if failures:
+    sys.exit(1)
+print(f"CHANGELOG.md: {len(sections)} sections, the first is {sections[0][0]} ({sections[0][1]}) as in CMakeLists.txt")
