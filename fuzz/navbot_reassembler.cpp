@@ -2,9 +2,11 @@
 // 1. The input, cut into frames (a length byte before each), goes through a
 //    small reassembler: sizes, outcomes and error offsets stay consistent.
 // 2. A message is sent with other traffic driven by the input: single frames
-//    of other commands, repeats, restarts, lost frames. Whenever the
-//    reassembler says `complete` for the message's command, the payload is
-//    the whole message: never a truncated one.
+//    of other commands, repeats, restarts (also one that first resends the
+//    last frame with other bytes), lost frames. Whenever the reassembler says
+//    `complete` for the message's command, the payload is the whole message:
+//    never a truncated one. A second reassembler, of 4 frames, gets the same
+//    frames: it completes the message only when it has at most 4 frames.
 // 3. The whole input, fragmented as one payload, reassembles to itself, and
 //    json_object() never accepts text that does not start with '{' and end with '}'.
 #include <robowire/navbot.hpp>
@@ -61,6 +63,7 @@ void message_with_traffic(std::span<const std::uint8_t> in) {
     std::size_t next = 0;  // index of the next frame to send
     bool lost = false;     // a frame was lost: outcomes are no longer predicted, completions still checked
     bool completed = false;
+    nb::reassembler<60> small;  // room for 4 frames
     const auto push = [&](const robowire::bytes<nb::frame_size>& f) {
         const auto st = rx.push(f);
         if (st && *st == nb::reassembly::complete && rx.command() == cmd) {
@@ -68,6 +71,10 @@ void message_with_traffic(std::span<const std::uint8_t> in) {
             FUZZ_CHECK(fuzz::same_bytes(rx.payload(), whole));
             completed = true;
         }
+        const auto in_small = small.push(f);
+        FUZZ_CHECK(small.payload().size() <= 60);
+        if (in_small && *in_small == nb::reassembly::complete && small.command() == cmd)
+            FUZZ_CHECK(count <= 4 && fuzz::same_bytes(small.payload(), whole));
         return st;
     };
     for (std::size_t op = 0; op < 400 && !r.empty(); ++op) {
@@ -91,11 +98,20 @@ void message_with_traffic(std::span<const std::uint8_t> in) {
             }
             break;
         case 6: {  // the sender starts over
+            // Bit 7: it first resends its last frame with other bytes (the same
+            // `remaining`): that begins a new message, `restarted`.
+            const bool changed = (b & 0x80) != 0 && next > 0 && next < count;
+            if (changed) {
+                auto other = frames[next - 1];
+                other[5] = static_cast<std::uint8_t>(other[5] ^ 0xFF);
+                const auto st = push(other);
+                if (!lost) FUZZ_CHECK(st && *st == nb::reassembly::restarted);
+            }
             const auto st = push(frames[0]);
             if (!lost) {
                 FUZZ_CHECK(st.has_value());
                 if (count == 1) FUZZ_CHECK(*st == nb::reassembly::complete);
-                else if (next == 1) FUZZ_CHECK(*st == nb::reassembly::duplicate);
+                else if (next == 1 && !changed) FUZZ_CHECK(*st == nb::reassembly::duplicate);
                 else if (next == 0 || next == count) FUZZ_CHECK(*st == nb::reassembly::need_more);
                 else FUZZ_CHECK(*st == nb::reassembly::restarted);
             }

@@ -1,4 +1,5 @@
-// OSP frames: osp::decode, re-encode (reserved bytes come back as 0).
+// OSP frames: osp::decode keeps the frame decode<osp::frame> reads; re-encode
+// (reserved bytes come back as 0).
 #include <robowire/osp.hpp>
 
 #include "common.hpp"
@@ -11,6 +12,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto m = osp::decode(in);
     const auto f = robowire::decode<osp::frame>(in);
     FUZZ_CHECK(m.frame().has_value() == f.has_value());
+    if (f) FUZZ_CHECK(*m.frame() == *f);  // the same DEV, CMD and P1..P4
     if (!m) {
         FUZZ_CHECK(m.error().offset <= size);
         return 0;
