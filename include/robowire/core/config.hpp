@@ -15,6 +15,13 @@
 #endif
 #undef ROBOWIRE_CPLUSPLUS
 
+// The version of these headers: 0.1.0 is 100 (major * 10000 + minor * 100 + patch).
+// The one source of the version: CMake reads it, a test checks the package files.
+#define ROBOWIRE_VERSION_MAJOR 0
+#define ROBOWIRE_VERSION_MINOR 1
+#define ROBOWIRE_VERSION_PATCH 0
+#define ROBOWIRE_VERSION (ROBOWIRE_VERSION_MAJOR * 10000 + ROBOWIRE_VERSION_MINOR * 100 + ROBOWIRE_VERSION_PATCH)
+
 // Forces inlining of the codec's per-field steps, so that a message's
 // encoder / decoder becomes one straight-line function.
 #if defined(__GNUC__) || defined(__clang__)
