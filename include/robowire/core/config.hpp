@@ -1,4 +1,7 @@
-// robowire/core/config.hpp - every macro robowire defines, in one place.
+// robowire/core/config.hpp - every macro robowire defines or reads, in one
+// place. A user sets ROBOWIRE_OPTIMIZE_SIZE, ROBOWIRE_ARRAY_LOOPS,
+// ROBOWIRE_ALWAYS_INLINE and ROBOWIRE_BAD_RESULT_ACCESS_HANDLER (before any
+// robowire header, or on the command line); the others are internal.
 #pragma once
 
 #if defined(_MSVC_LANG)
@@ -22,12 +25,16 @@
 #define ROBOWIRE_VERSION_PATCH 0
 #define ROBOWIRE_VERSION (ROBOWIRE_VERSION_MAJOR * 10000 + ROBOWIRE_VERSION_MINOR * 100 + ROBOWIRE_VERSION_PATCH)
 
-// Forces inlining of the codec's per-field steps, so that a message's
-// encoder / decoder becomes one straight-line function.
-#if defined(__GNUC__) || defined(__clang__)
+// ROBOWIRE_ALWAYS_INLINE: forces inlining of the codec's per-field steps, so
+// that a message's encoder / decoder becomes one straight-line function.
+// Plain `inline` when not optimizing (-O0) or not g++ / clang++. Define it
+// (to something that includes `inline`) to choose.
+#ifndef ROBOWIRE_ALWAYS_INLINE
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__)
 #define ROBOWIRE_ALWAYS_INLINE [[gnu::always_inline]] inline
 #else
 #define ROBOWIRE_ALWAYS_INLINE inline
+#endif
 #endif
 
 // Keeps an error path out of line and out of the hot code.
@@ -86,6 +93,17 @@
 #define ROBOWIRE_NO_UNROLL _Pragma("GCC unroll 1")
 #else
 #define ROBOWIRE_NO_UNROLL
+#endif
+
+// ROBOWIRE_BAD_RESULT_ACCESS_HANDLER: not defined by robowire. Without
+// exceptions, a wrong access to a result (value() of an error, error() of a
+// value) calls the function it names, then traps; not defined: traps. Define
+// it the same for every file (-DROBOWIRE_BAD_RESULT_ACCESS_HANDLER=on_bad_access)
+// and define that function once, at global scope; it must not return:
+//   void on_bad_access(robowire::error e) noexcept { log(e); reset(); }
+#if defined(ROBOWIRE_BAD_RESULT_ACCESS_HANDLER) && !defined(__cpp_exceptions)
+namespace robowire { struct error; }
+void ROBOWIRE_BAD_RESULT_ACCESS_HANDLER(robowire::error) noexcept;
 #endif
 
 namespace robowire::detail {

@@ -82,14 +82,9 @@ struct alignas(4) error {  // no padding, aligned: built in a register, not thro
 
 // Without exceptions, value(), operator* and operator-> of a result holding
 // an error (and error() of one holding a value, with errc::ok) call the
-// function named by ROBOWIRE_BAD_RESULT_ACCESS_HANDLER, if defined, then
-// trap. Define it for every translation unit (-DROBOWIRE_BAD_RESULT_ACCESS_HANDLER=on_bad_access)
-// and define that function once, at global scope:
-//   void on_bad_access(robowire::error e) noexcept { log(e); reset(); }   // must not return
-// No handler: trap. A macro, not a settable pointer, so that the library has no static data.
-#if defined(ROBOWIRE_BAD_RESULT_ACCESS_HANDLER) && !defined(__cpp_exceptions)
-void ROBOWIRE_BAD_RESULT_ACCESS_HANDLER(robowire::error) noexcept;
-#endif
+// function named by ROBOWIRE_BAD_RESULT_ACCESS_HANDLER (config.hpp), if
+// defined, then trap. A macro, not a settable pointer, so that the library
+// has no static data.
 
 namespace robowire {
 
