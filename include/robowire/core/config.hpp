@@ -95,6 +95,25 @@
 #define ROBOWIRE_NO_UNROLL
 #endif
 
+// The inline namespace of the code that depends on the two macros above
+// (robowire::detail::size1_loops1 at -Os): files built with different
+// settings link into one program, each with its own copy of that code,
+// instead of two different definitions under one name (ill-formed, and the
+// linker would keep either).
+#if ROBOWIRE_OPTIMIZE_SIZE == 0 && ROBOWIRE_ARRAY_LOOPS == 0
+#define ROBOWIRE_MODE_NAMESPACE size0_loops0
+#elif ROBOWIRE_OPTIMIZE_SIZE == 0 && ROBOWIRE_ARRAY_LOOPS == 1
+#define ROBOWIRE_MODE_NAMESPACE size0_loops1
+#elif ROBOWIRE_OPTIMIZE_SIZE == 0
+#define ROBOWIRE_MODE_NAMESPACE size0_loops2
+#elif ROBOWIRE_ARRAY_LOOPS == 0
+#define ROBOWIRE_MODE_NAMESPACE size1_loops0
+#elif ROBOWIRE_ARRAY_LOOPS == 1
+#define ROBOWIRE_MODE_NAMESPACE size1_loops1
+#else
+#define ROBOWIRE_MODE_NAMESPACE size1_loops2
+#endif
+
 // ROBOWIRE_BAD_RESULT_ACCESS_HANDLER: not defined by robowire. Without
 // exceptions, a wrong access to a result (value() of an error, error() of a
 // value) calls the function it names, then traps; not defined: traps. Define
