@@ -24,7 +24,7 @@ namespace detail {
 // taken at run time, still had g++ compile the variant's constructors for
 // every alternative (a third of the functions of a TU using every dispatcher).
 template <std::size_t I, class Variant>
-ROBOWIRE_ALWAYS_INLINE constexpr auto& emplace_alternative(Variant& v) noexcept {
+inline constexpr auto& emplace_alternative(Variant& v) noexcept {
 #if defined(__clang__)
     if (std::is_constant_evaluated()) {
         v = Variant(std::in_place_index<I>);
@@ -38,12 +38,12 @@ ROBOWIRE_ALWAYS_INLINE constexpr auto& emplace_alternative(Variant& v) noexcept 
 // one compare per alternative. Cheaper to compile than std::visit, which
 // instantiates a table of functions and checks every visitor result type.
 template <class Variant, class F, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr void visit_held(Variant& v, F&& f, std::index_sequence<I...>) {
+inline constexpr void visit_held(Variant& v, F&& f, std::index_sequence<I...>) {
     const std::size_t held = v.index();
     (void)((held == I ? (f(*std::get_if<I>(&v)), true) : false) || ...);
 }
 template <class Variant, class F>
-ROBOWIRE_ALWAYS_INLINE constexpr void visit_held(Variant& v, F&& f) {
+inline constexpr void visit_held(Variant& v, F&& f) {
     visit_held(v, f, std::make_index_sequence<std::variant_size_v<std::remove_const_t<Variant>>>{});
 }
 
