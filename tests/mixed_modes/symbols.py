@@ -11,7 +11,11 @@ function defined in two of them must have the same instructions and
 relocations: code that depends on the settings is in their inline namespace
 (size0_loops0 ... size1_loops2, core/config.hpp), so its names differ. Exits 1
 naming each function that breaks this (two bodies under one name: the linker
-keeps either)."""
+keeps either).
+
+Then links scanner_caller.cpp built at -Os with scanner_user.cpp built at
+-O2: osp::scanner is a type per setting, so the function taking one must
+not be found (an undefined reference naming size1_loops1::scanner)."""
 import os
 import re
 import subprocess
@@ -63,8 +67,21 @@ def main():
             print(f"{d}: differs between {names(first)} and {other}")
         print(f"{len({f for f, _ in clashes})} functions have a body per setting under one name")
         return 1
+    with tempfile.TemporaryDirectory() as out:
+        parts = []
+        for src, opt in (("scanner_caller.cpp", "-Os"), ("scanner_user.cpp", "-O2")):
+            parts.append(os.path.join(out, src + ".o"))
+            subprocess.run([cxx, "-std=c++20", opt, "-I", include, "-c", os.path.join(HERE, src), "-o", parts[-1]],
+                           check=True)
+        link = subprocess.run([cxx, *parts, "-o", os.path.join(out, "scanner")], capture_output=True, text=True)
+    expected = "on_uart(robowire::osp::size1_loops1::scanner&)"
+    if link.returncode == 0 or expected not in link.stderr:
+        print(f"an osp::scanner passed from an -Os file to an -O2 file: link {'succeeded' if link.returncode == 0 else 'failed'}"
+              f", expected an undefined reference to {expected}\n{link.stderr}")
+        return 1
     total = {names(st): len(objs[st]) for st in SETTINGS}
-    print(f"functions per object: {total}; at most {shared} shared between two settings, all identical")
+    print(f"functions per object: {total}; at most {shared} shared between two settings, all identical;"
+          f" an osp::scanner across settings does not link")
     return 0
 
 
