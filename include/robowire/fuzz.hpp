@@ -305,7 +305,7 @@ template <class M>
 // LLVMFuzzerMutate: mutates data[0..size) in place, returns the new size (<= max_size).
 using byte_mutator = std::size_t (*)(std::uint8_t* data, std::size_t size, std::size_t max_size);
 
-namespace detail {
+namespace detail::inline ROBOWIRE_MODE_NAMESPACE {  // decode and encode below depend on the size settings
 // splitmix64: a small, good generator for the mutator's choices.
 struct rng {
     std::uint64_t state;
@@ -565,8 +565,9 @@ constexpr std::size_t repair(std::uint8_t* data, std::size_t size, std::size_t m
     }(std::make_index_sequence<n>{});
     return out;
 }
-}  // namespace detail
+}  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE
 
+inline namespace ROBOWIRE_MODE_NAMESPACE {
 // A structure-aware mutator for libFuzzer's LLVMFuzzerCustomMutator:
 //
 //   extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size,
@@ -621,5 +622,6 @@ constexpr std::size_t mutate(std::uint8_t* data, std::size_t size, std::size_t m
     }
     return detail::mutate_bytes(data, size, max_size, r, fallback);
 }
+}  // inline namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire::fuzz

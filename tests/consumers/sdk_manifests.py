@@ -14,9 +14,10 @@ root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 errors = []
 
 idf = yaml.safe_load(open(os.path.join(root, "idf_component.yml")))
-version = re.search(r"project\(robowire VERSION ([0-9.]+)", open(os.path.join(root, "CMakeLists.txt")).read()).group(1)
+config = open(os.path.join(root, "include", "robowire", "core", "config.hpp")).read()
+version = ".".join(re.search(rf"^#define ROBOWIRE_VERSION_{p} (\d+)$", config, re.M).group(1) for p in ("MAJOR", "MINOR", "PATCH"))
 if idf.get("version") != version:
-    errors.append(f"idf_component.yml: version {idf.get('version')!r}, CMakeLists.txt says {version}")
+    errors.append(f"idf_component.yml: version {idf.get('version')!r}, core/config.hpp says {version}")
 if idf.get("license") != "BSL-1.0" or "Boost Software License" not in open(os.path.join(root, "LICENSE")).read():
     errors.append("idf_component.yml: license is not BSL-1.0 (LICENSE is the Boost Software License)")
 if not idf.get("description"):

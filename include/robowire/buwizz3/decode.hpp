@@ -15,6 +15,7 @@ namespace robowire::buwizz3 {
 // Every device -> host notification (application characteristic).
 using notification = std::variant<status, accel_calibration, charger_settings>;
 
+inline namespace ROBOWIRE_MODE_NAMESPACE {
 // Decodes a packet written to the device; unknown_message (offset 0) for an unknown command byte.
 // (A template, so that nothing is instantiated in a translation unit that does not call it.)
 template <class Command = command>
@@ -26,5 +27,6 @@ template <class Notification = notification>
 [[nodiscard]] constexpr result<Notification> decode_notification(std::span<const std::uint8_t> in) noexcept {
     return decode_variant<Notification, 0>(in);
 }
+}  // inline namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire::buwizz3

@@ -1,4 +1,7 @@
-// robowire/core/config.hpp - every macro robowire defines, in one place.
+// robowire/core/config.hpp - every macro robowire defines or reads, in one
+// place. A user sets ROBOWIRE_OPTIMIZE_SIZE, ROBOWIRE_ARRAY_LOOPS,
+// ROBOWIRE_ALWAYS_INLINE and ROBOWIRE_BAD_RESULT_ACCESS_HANDLER (before any
+// robowire header, or on the command line); the others are internal.
 #pragma once
 
 #if defined(_MSVC_LANG)
@@ -15,12 +18,23 @@
 #endif
 #undef ROBOWIRE_CPLUSPLUS
 
-// Forces inlining of the codec's per-field steps, so that a message's
-// encoder / decoder becomes one straight-line function.
-#if defined(__GNUC__) || defined(__clang__)
+// The version of these headers: 0.1.0 is 100 (major * 10000 + minor * 100 + patch).
+// The one source of the version: CMake reads it, a test checks the package files.
+#define ROBOWIRE_VERSION_MAJOR 0
+#define ROBOWIRE_VERSION_MINOR 1
+#define ROBOWIRE_VERSION_PATCH 0
+#define ROBOWIRE_VERSION (ROBOWIRE_VERSION_MAJOR * 10000 + ROBOWIRE_VERSION_MINOR * 100 + ROBOWIRE_VERSION_PATCH)
+
+// ROBOWIRE_ALWAYS_INLINE: forces inlining of the codec's per-field steps, so
+// that a message's encoder / decoder becomes one straight-line function.
+// Plain `inline` when not optimizing (-O0) or not g++ / clang++. Define it
+// (to something that includes `inline`) to choose.
+#ifndef ROBOWIRE_ALWAYS_INLINE
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__)
 #define ROBOWIRE_ALWAYS_INLINE [[gnu::always_inline]] inline
 #else
 #define ROBOWIRE_ALWAYS_INLINE inline
+#endif
 #endif
 
 // Keeps an error path out of line and out of the hot code.
@@ -79,6 +93,36 @@
 #define ROBOWIRE_NO_UNROLL _Pragma("GCC unroll 1")
 #else
 #define ROBOWIRE_NO_UNROLL
+#endif
+
+// The inline namespace of the code that depends on the two macros above
+// (robowire::detail::size1_loops1 at -Os): files built with different
+// settings link into one program, each with its own copy of that code,
+// instead of two different definitions under one name (ill-formed, and the
+// linker would keep either).
+#if ROBOWIRE_OPTIMIZE_SIZE == 0 && ROBOWIRE_ARRAY_LOOPS == 0
+#define ROBOWIRE_MODE_NAMESPACE size0_loops0
+#elif ROBOWIRE_OPTIMIZE_SIZE == 0 && ROBOWIRE_ARRAY_LOOPS == 1
+#define ROBOWIRE_MODE_NAMESPACE size0_loops1
+#elif ROBOWIRE_OPTIMIZE_SIZE == 0
+#define ROBOWIRE_MODE_NAMESPACE size0_loops2
+#elif ROBOWIRE_ARRAY_LOOPS == 0
+#define ROBOWIRE_MODE_NAMESPACE size1_loops0
+#elif ROBOWIRE_ARRAY_LOOPS == 1
+#define ROBOWIRE_MODE_NAMESPACE size1_loops1
+#else
+#define ROBOWIRE_MODE_NAMESPACE size1_loops2
+#endif
+
+// ROBOWIRE_BAD_RESULT_ACCESS_HANDLER: not defined by robowire. Without
+// exceptions, a wrong access to a result (value() of an error, error() of a
+// value) calls the function it names, then traps; not defined: traps. Define
+// it the same for every file (-DROBOWIRE_BAD_RESULT_ACCESS_HANDLER=on_bad_access)
+// and define that function once, at global scope; it must not return:
+//   void on_bad_access(robowire::error e) noexcept { log(e); reset(); }
+#if defined(ROBOWIRE_BAD_RESULT_ACCESS_HANDLER) && !defined(__cpp_exceptions)
+namespace robowire { struct error; }
+void ROBOWIRE_BAD_RESULT_ACCESS_HANDLER(robowire::error) noexcept;
 #endif
 
 namespace robowire::detail {

@@ -23,7 +23,7 @@ template <class M>
     return in.size();
 }
 
-namespace detail {
+namespace detail::inline ROBOWIRE_MODE_NAMESPACE {
 // too_short (at the input's end) or too_long (at the largest size); out of
 // line, so that the good path sets up no error.
 ROBOWIRE_COLD constexpr error length_error(std::size_t size, std::size_t min, std::size_t max) noexcept {
@@ -60,7 +60,9 @@ template <class M>
 constexpr error decode_raw(M& out, const std::uint8_t* data, std::size_t size) noexcept {
     return decode_checked<no_offset>(out, std::span<const std::uint8_t>(data, size));
 }
-}  // namespace detail
+}  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE
+
+inline namespace ROBOWIRE_MODE_NAMESPACE {
 
 // Decodes `in` into `out` (an existing object, e.g. one refreshed 20 times a
 // second): the same checks as decode(); returns errc::ok or the error. On an
@@ -74,9 +76,10 @@ template <described M>
 // enum is checked, and the error says what and at which byte offset.
 template <described M>
 [[nodiscard]] constexpr result<M> decode(std::span<const std::uint8_t> in) noexcept {
-    result<M> r{std::in_place};  // built in place: every return below returns r
+    result<M> r = detail::in_place_result<M>();  // built in place: every return below returns r
     if (const error e = decode_into(detail::built_value(r), in); e.code != errc::ok) r = e;
     return r;
 }
+}  // inline namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire

@@ -24,7 +24,7 @@ namespace detail {
 // taken at run time, still had g++ compile the variant's constructors for
 // every alternative (a third of the functions of a TU using every dispatcher).
 template <std::size_t I, class Variant>
-ROBOWIRE_ALWAYS_INLINE constexpr auto& emplace_alternative(Variant& v) noexcept {
+inline constexpr auto& emplace_alternative(Variant& v) noexcept {
 #if defined(__clang__)
     if (std::is_constant_evaluated()) {
         v = Variant(std::in_place_index<I>);
@@ -38,12 +38,12 @@ ROBOWIRE_ALWAYS_INLINE constexpr auto& emplace_alternative(Variant& v) noexcept 
 // one compare per alternative. Cheaper to compile than std::visit, which
 // instantiates a table of functions and checks every visitor result type.
 template <class Variant, class F, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr void visit_held(Variant& v, F&& f, std::index_sequence<I...>) {
+inline constexpr void visit_held(Variant& v, F&& f, std::index_sequence<I...>) {
     const std::size_t held = v.index();
     (void)((held == I ? (f(*std::get_if<I>(&v)), true) : false) || ...);
 }
 template <class Variant, class F>
-ROBOWIRE_ALWAYS_INLINE constexpr void visit_held(Variant& v, F&& f) {
+inline constexpr void visit_held(Variant& v, F&& f) {
     visit_held(v, f, std::make_index_sequence<std::variant_size_v<std::remove_const_t<Variant>>>{});
 }
 
@@ -93,6 +93,7 @@ inline constexpr auto key_list_v = [] {
             list[n++] = {static_cast<std::uint8_t>(k), key_index_v<Variant, KeyOffset>[k]};
     return list;
 }();
+inline namespace ROBOWIRE_MODE_NAMESPACE {
 // Index of the alternative whose key is `key` (variant_size: none).
 template <class Variant, std::size_t KeyOffset>
 constexpr std::size_t index_of_key(std::uint8_t key) noexcept {
@@ -156,9 +157,10 @@ ROBOWIRE_ALWAYS_INLINE constexpr error check_alternative(std::size_t index, std:
     if (in.size() > size[1]) return fail_at(errc::too_long, size[1]);
     return e;
 }
+}  // inline namespace ROBOWIRE_MODE_NAMESPACE
 }  // namespace detail
 
-namespace detail {
+namespace detail::inline ROBOWIRE_MODE_NAMESPACE {
 // Index of the smallest alternative: the cheapest value a variant can start
 // with before the decoded alternative replaces it.
 template <class Variant>
@@ -197,8 +199,9 @@ constexpr result<Variant> decode_variant_at(const std::uint8_t* data, std::size_
     }
     return r;
 }
-}  // namespace detail
+}  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE
 
+inline namespace ROBOWIRE_MODE_NAMESPACE {
 // Decodes `in` as the alternative of Variant whose fixed byte at KeyOffset
 // matches (alternatives sharing a key do not compile); unknown_message (at KeyOffset) if
 // none does, too_short if the input does not reach the key. The message is
@@ -207,6 +210,7 @@ template <class Variant, std::size_t KeyOffset = 0>
 [[nodiscard]] ROBOWIRE_ALWAYS_INLINE constexpr result<Variant> decode_variant(std::span<const std::uint8_t> in) noexcept {
     return detail::decode_variant_at<Variant, KeyOffset>(in.data(), in.size());
 }
+}  // inline namespace ROBOWIRE_MODE_NAMESPACE
 
 namespace detail {
 template <class Variant> struct max_size_of;
@@ -221,7 +225,7 @@ template <class... M> struct max_size_of<std::variant<M...>> {
 template <class Variant>
 inline constexpr std::size_t variant_max_size_v = detail::max_size_of<Variant>::value;
 
-namespace detail {
+namespace detail::inline ROBOWIRE_MODE_NAMESPACE {
 // Encodes the alternative v holds into out_data (see encode_into);
 // unknown_message (offset 0) for a valueless variant.
 template <class Variant, std::size_t... I>
@@ -232,15 +236,16 @@ ROBOWIRE_ALWAYS_INLINE constexpr error encode_held(const Variant& v, std::uint8_
     (void)((held == I ? (e = encode_into(*std::get_if<I>(&v), out_data, out_size, written), true) : false) || ...);
     return e;
 }
-}  // namespace detail
+}  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE
 
+inline namespace ROBOWIRE_MODE_NAMESPACE {
 // Encodes whichever message the variant holds, into the largest buffer any
 // needs. Errors: the message's; unknown_message (offset 0) for a variant left
 // valueless by an exception.
 template <class... M>
 [[nodiscard]] constexpr result<bytes<variant_max_size_v<std::variant<M...>>>> encode(const std::variant<M...>& v) noexcept {
     using out_t = bytes<variant_max_size_v<std::variant<M...>>>;
-    result<out_t> r{std::in_place};
+    result<out_t> r = detail::in_place_result<out_t>();
     auto& b = detail::built_value(r);  // each message is encoded straight into it
     std::size_t n = 0;
     const error e = detail::encode_held(v, b.data(), out_t::capacity(), n, std::index_sequence_for<M...>{});
@@ -248,5 +253,6 @@ template <class... M>
     else detail::set_written_size(b, n);
     return r;
 }
+}  // inline namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire

@@ -16,7 +16,7 @@
 
 namespace robowire {
 
-namespace detail {
+namespace detail::inline ROBOWIRE_MODE_NAMESPACE {
 // Encodes m into out_data (at most out_size bytes) and sets `written`: the
 // error, if any, is returned in a register and the output is left unchanged.
 // Pointer and size, not a span: a span passed on by value from an inlined
@@ -42,7 +42,9 @@ constexpr error encode_into(const M& m, std::uint8_t* out_data, std::size_t out_
     written = built_value(size);
     return err;
 }
-}  // namespace detail
+}  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE
+
+inline namespace ROBOWIRE_MODE_NAMESPACE {
 
 // Encodes m into a caller's buffer (e.g. the radio's transmit buffer);
 // returns the number of bytes written. Errors as for encode(), then
@@ -69,6 +71,7 @@ template <described M>
         detail::set_written_size(b, n);
     return r;
 }
+}  // inline namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire
 

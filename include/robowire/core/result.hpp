@@ -82,14 +82,9 @@ struct alignas(4) error {  // no padding, aligned: built in a register, not thro
 
 // Without exceptions, value(), operator* and operator-> of a result holding
 // an error (and error() of one holding a value, with errc::ok) call the
-// function named by ROBOWIRE_BAD_RESULT_ACCESS_HANDLER, if defined, then
-// trap. Define it for every translation unit (-DROBOWIRE_BAD_RESULT_ACCESS_HANDLER=on_bad_access)
-// and define that function once, at global scope:
-//   void on_bad_access(robowire::error e) noexcept { log(e); reset(); }   // must not return
-// No handler: trap. A macro, not a settable pointer, so that the library has no static data.
-#if defined(ROBOWIRE_BAD_RESULT_ACCESS_HANDLER) && !defined(__cpp_exceptions)
-void ROBOWIRE_BAD_RESULT_ACCESS_HANDLER(robowire::error) noexcept;
-#endif
+// function named by ROBOWIRE_BAD_RESULT_ACCESS_HANDLER (config.hpp), if
+// defined, then trap. A macro, not a settable pointer, so that the library
+// has no static data.
 
 namespace robowire {
 
@@ -202,6 +197,10 @@ inline void run_time_only() noexcept {}
 
 template <class T> class result;
 namespace detail {
+// Tag of result's value-initialising constructor.
+struct value_init_t {
+    explicit value_init_t() = default;
+};
 // The value of a result that the codec itself has just built holding one:
 // no access check (at -Os the check is a call that is not folded away).
 template <class T>
@@ -227,10 +226,13 @@ public:
     constexpr result(const T& val) noexcept : value_(val), ok_(true) {}
     constexpr result(robowire::error e) noexcept : error_(e), ok_(false) {}
     // A value-holding result whose value is default-initialised (member
-    // initialisers run; nothing is cleared first, except for values over 32
-    // bytes under ROBOWIRE_OPTIMIZE_SIZE): for codecs that then write every member.
+    // initialisers run; nothing is cleared first): for codecs that then write every member.
     constexpr explicit result(std::in_place_t) noexcept(std::is_nothrow_default_constructible_v<T>)
-        : value_(ROBOWIRE_OPTIMIZE_SIZE && sizeof(T) > 32 ? holder(cleared{}) : holder(std::in_place)), ok_(true) {}
+        : value_(std::in_place), ok_(true) {}
+    // The same, value-initialised: cleared in one block, then member initialisers
+    // (less code than member by member for a large T, see detail::in_place_result).
+    constexpr explicit result(detail::value_init_t) noexcept(std::is_nothrow_default_constructible_v<T>)
+        : value_(cleared{}), ok_(true) {}
     // A value-holding result whose value is T(arg).
     template <class A>
     constexpr result(std::in_place_t, const A& arg) noexcept(std::is_nothrow_constructible_v<T, const A&>)
@@ -286,8 +288,7 @@ private:
         constexpr explicit holder(std::in_place_t) noexcept(std::is_nothrow_default_constructible_v<T>) {
             if (!std::is_constant_evaluated()) detail::run_time_only();
         }
-        // Value-initialised (cleared, then member initialisers): one block clear,
-        // less code than member by member (ROBOWIRE_OPTIMIZE_SIZE).
+        // Value-initialised (cleared, then member initialisers): one block clear.
         constexpr explicit holder(cleared) noexcept(std::is_nothrow_default_constructible_v<T>) : v() {}
         constexpr holder(const T& val) noexcept : v(val) {}
         template <class A>
@@ -331,5 +332,15 @@ namespace detail {
 // (detail/check.hpp): no clamp.
 constexpr error fail_at(errc code, std::size_t offset) noexcept { return error{code, static_cast<std::uint16_t>(offset)}; }
 }  // namespace detail
+
+namespace detail::inline ROBOWIRE_MODE_NAMESPACE {
+// A value-holding result for a codec that then writes every member; under
+// ROBOWIRE_OPTIMIZE_SIZE a T over 32 bytes is cleared in one block first.
+template <class T>
+constexpr result<T> in_place_result() noexcept {
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE && sizeof(T) > 32) return result<T>(value_init_t{});
+    else return result<T>(std::in_place);
+}
+}  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire

@@ -18,6 +18,7 @@ using message = std::variant<maneuver, frame>;
 // Decodes one 20-byte frame. Signed maneuver channels: two's complement.
 // Length errors: too_short / too_long (length_error_text explains them).
 // (A template, so that nothing is instantiated in a translation unit that does not call it.)
+inline namespace ROBOWIRE_MODE_NAMESPACE {
 template <class Message = message>
 [[nodiscard]] constexpr result<Message> decode_frame(std::span<const std::uint8_t> in) noexcept {
     using maneuver_t = std::variant_alternative_t<0, Message>;
@@ -31,5 +32,6 @@ template <class Message = message>
     }
     return Message{*f};
 }
+}  // inline namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire::navbot

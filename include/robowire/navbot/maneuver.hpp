@@ -92,6 +92,7 @@ constexpr void convert_signed(std::span<std::uint8_t> b) noexcept {
 }
 }  // namespace impl
 
+inline namespace ROBOWIRE_MODE_NAMESPACE {
 // Encodes with the chosen sign encoding (robowire::encode(m) is two's complement).
 // (A template only so that nothing is instantiated in a translation unit that does not call it.)
 template <class Deferred = void>
@@ -114,5 +115,6 @@ template <class Deferred = void>
     impl::convert_signed<false, Deferred>(copy);
     return robowire::decode<maneuver>(robowire::detail::deferred<Deferred>(std::span<const std::uint8_t>(copy)));
 }
+}  // inline namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire::navbot

@@ -22,6 +22,9 @@ inline constexpr std::size_t max_payload = max_frames * payload_size;
 // Number of frames for `n` payload bytes (an empty payload still takes one frame).
 constexpr std::size_t frames_for(std::size_t n) noexcept { return n == 0 ? 1 : (n + payload_size - 1) / payload_size; }
 
+// The fragmenter and the reassembler are types of the inline namespace of the
+// size settings (config.hpp): their code depends on ROBOWIRE_OPTIMIZE_SIZE.
+inline namespace ROBOWIRE_MODE_NAMESPACE {
 // The frames of one message. Holds a view of the payload (keep it alive);
 // frames are built on demand. `remaining` counts down to 0, the last frame
 // is zero-padded, every frame carries the same command.
@@ -91,6 +94,7 @@ constexpr result<fragmenter> make_frames(std::uint8_t command, std::span<const s
 constexpr result<text_fragmenter> json_frames(std::string_view text) noexcept {
     return text_fragmenter::make(command::json, {text.data(), text.size()});
 }
+}  // inline namespace ROBOWIRE_MODE_NAMESPACE
 
 // Checks that `text` is one complete JSON object: optional white space, an
 // object whose braces and brackets balance and whose strings are closed,
@@ -143,6 +147,7 @@ enum class reassembly : std::uint8_t {
     discarded,   // dropped: part of a message already broken by an error
 };
 
+inline namespace ROBOWIRE_MODE_NAMESPACE {
 // Collects the frames of one message at a time, up to Capacity payload
 // bytes (use a multiple of 15). Fixed size, owned by the caller.
 //
@@ -285,5 +290,6 @@ private:
     bool has_last_ = false;
     state state_ = state::idle;
 };
+}  // inline namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire::navbot

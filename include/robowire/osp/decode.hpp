@@ -18,13 +18,14 @@ namespace robowire::osp {
 
 class decode_result;
 namespace impl {
-template <class Message>
-constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) noexcept;
+constexpr void set_frame(decode_result& d, const osp::frame& f) noexcept;
 }  // namespace impl
+inline namespace ROBOWIRE_MODE_NAMESPACE {
 // Decodes one 10-byte frame (below). A template, so that nothing is
 // instantiated in a translation unit that does not call it.
 template <class Message = message>
 [[nodiscard]] constexpr decode_result decode(std::span<const std::uint8_t> in) noexcept;
+}  // inline namespace ROBOWIRE_MODE_NAMESPACE
 
 // The result of osp::decode: the message, or an error; frame() holds DEV,
 // CMD and P1..P4 whenever the markers and length were right, so an
@@ -38,10 +39,10 @@ public:
     constexpr const std::optional<osp::frame>& frame() const noexcept { return frame_; }
 
 private:
-    template <class Message>
-    friend constexpr decode_result impl::decode_at(const std::uint8_t* data, std::size_t size) noexcept;
+    friend constexpr void impl::set_frame(decode_result& d, const osp::frame& f) noexcept;
     std::optional<osp::frame> frame_;
 };
+constexpr void impl::set_frame(decode_result& d, const osp::frame& f) noexcept { d.frame_ = f; }
 
 static_assert(sizeof(frame) == 6 && std::is_trivially_copyable_v<frame>, "osp::frame: DEV, CMD, P1..P4, no padding");
 
@@ -80,6 +81,7 @@ constexpr bool plain_frame() noexcept {
 // The four markers: the fixed bytes of osp::frame (a copy of them alone, so
 // that the loop below keeps only 32 bytes of the table in flash).
 inline constexpr auto markers = table_v<osp::frame>.fixed;
+inline namespace ROBOWIRE_MODE_NAMESPACE {
 // Which of the checks below a frame failed, in decode_into<frame>'s order
 // (out of line: the good path is one test per byte).
 ROBOWIRE_COLD constexpr error frame_error(std::span<const std::uint8_t> in) noexcept {
@@ -137,9 +139,10 @@ ROBOWIRE_SIZE_NOINLINE constexpr void write_frame(bytes<frame_size>& b, std::uin
     out[8] = end1;
     out[9] = end2;
 }
+}  // inline namespace ROBOWIRE_MODE_NAMESPACE
 }  // namespace impl
 
-namespace impl {
+namespace impl::inline ROBOWIRE_MODE_NAMESPACE {
 // decode's work, out of line: the input as pointer and size (a span that an
 // inlined caller passes on by value is copied through the stack first).
 template <class Message>
@@ -151,17 +154,19 @@ constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) no
         return d;
     }
     if (ROBOWIRE_OPTIMIZE_SIZE || std::is_constant_evaluated()) {
-        d.frame_ = osp::frame{in[2], in[3], {in[4], in[5], in[6], in[7]}};
+        set_frame(d, osp::frame{in[2], in[3], {in[4], in[5], in[6], in[7]}});
     } else {  // one wide copy, not six bytes
         osp::frame f;
         std::memcpy(&f, data + 2, sizeof f);
-        d.frame_ = f;
+        set_frame(d, f);
     }
     decode_by_key(d, static_cast<std::uint16_t>(in[2] << 8 | in[3]), in,
                   std::make_index_sequence<std::variant_size_v<Message>>{});
     return d;
 }
-}  // namespace impl
+}  // namespace impl::inline ROBOWIRE_MODE_NAMESPACE
+
+inline namespace ROBOWIRE_MODE_NAMESPACE {
 // Decodes one 10-byte frame into whichever message its DEV and CMD name.
 // Errors: too_short / too_long, bad_header, bad_trailer, unknown_message
 // (offset 2), and the message's own field errors.
@@ -231,5 +236,6 @@ template <class Handler>
         });
     return r;
 }
+}  // inline namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire::osp

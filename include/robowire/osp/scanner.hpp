@@ -13,7 +13,9 @@
 
 #include "frame.hpp"
 
-namespace robowire::osp {
+// A type of the inline namespace of the size settings (config.hpp): its
+// feed() depends on ROBOWIRE_OPTIMIZE_SIZE.
+namespace robowire::osp::inline ROBOWIRE_MODE_NAMESPACE {
 
 // Fixed-size stream scanner: feed bytes in chunks of any size (one at a time
 // is fine); every frame with the right markers (FF AA .. 55 77) is reported
@@ -151,4 +153,4 @@ private:
     std::uint64_t frames_ = 0, skipped_ = 0, false_starts_ = 0;
 };
 
-}  // namespace robowire::osp
+}  // namespace robowire::osp::inline ROBOWIRE_MODE_NAMESPACE

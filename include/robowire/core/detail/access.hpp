@@ -50,6 +50,7 @@ inline constexpr std::size_t fixed_count_v = table_v<M>.fixed.size();
 template <class W>
 inline constexpr bool scalar_wire_v = W::kind != wire_kind::record && W::kind != wire_kind::text && W::kind != wire_kind::tail;
 
+inline namespace ROBOWIRE_MODE_NAMESPACE {
 // Whether array field F is coded as one element's code in a loop (ROBOWIRE_ARRAY_LOOPS).
 template <class F>
 constexpr bool decode_in_loop() noexcept {
@@ -59,6 +60,7 @@ constexpr bool decode_in_loop() noexcept {
 }
 template <class F>
 constexpr bool encode_in_loop() noexcept { return ROBOWIRE_ARRAY_LOOPS != 0 && F::count >= 2; }
+}  // inline namespace ROBOWIRE_MODE_NAMESPACE
 
 // An array of at least 4 one-byte integers whose wire bytes are their memory
 // bytes: stored whole once checked (one memcpy at run time).

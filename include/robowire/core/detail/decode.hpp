@@ -20,7 +20,8 @@
 #include "../table.hpp"
 #include "access.hpp"
 
-namespace robowire::detail {
+// Every step in the inline namespace of the size settings (config.hpp).
+namespace robowire::detail::inline ROBOWIRE_MODE_NAMESPACE {
 
 // ---- decode: ranges, sizes and kinds are template constants; byte offsets
 // are arguments (constants again once inlined), so that each field is
@@ -210,4 +211,4 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_fields(M& out, std::span<const std
     return err;
 }
 
-}  // namespace robowire::detail
+}  // namespace robowire::detail::inline ROBOWIRE_MODE_NAMESPACE

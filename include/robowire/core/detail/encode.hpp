@@ -19,7 +19,8 @@
 #include "../table.hpp"
 #include "access.hpp"
 
-namespace robowire::detail {
+// Every step in the inline namespace of the size settings (config.hpp).
+namespace robowire::detail::inline ROBOWIRE_MODE_NAMESPACE {
 
 // ---- encode, in two passes: check every field (the first error wins), then
 // write them all without a branch, so that the stores can merge.
@@ -291,4 +292,4 @@ ROBOWIRE_ALWAYS_INLINE constexpr void clear_bytes(std::span<std::uint8_t> out) n
     clear_bytes<M>(out, std::make_index_sequence<cleared_offsets_v<M>.size()>{});
 }
 
-}  // namespace robowire::detail
+}  // namespace robowire::detail::inline ROBOWIRE_MODE_NAMESPACE

@@ -1,0 +1,96 @@
+// The same codec calls, compiled in two files of one program at different
+// size settings (size.cpp at -Os, speed.cpp at -O2): MIXED_MODES_FILE names
+// the file's namespace. No Catch2 here: main.cpp checks what these return.
+#include <robowire/buwizz3.hpp>
+#include <robowire/navbot.hpp>
+#include <robowire/osp.hpp>
+
+#include <array>
+#include <cstdint>
+#include <span>
+
+namespace MIXED_MODES_FILE {
+
+namespace bw = robowire::buwizz3;
+namespace nb = robowire::navbot;
+namespace osp = robowire::osp;
+
+// ROBOWIRE_OPTIMIZE_SIZE * 10 + ROBOWIRE_ARRAY_LOOPS, as this file was compiled.
+int mode() { return ROBOWIRE_OPTIMIZE_SIZE * 10 + ROBOWIRE_ARRAY_LOOPS; }
+
+// The bytes through a volatile copy, so that the codec runs at run time.
+template <std::size_t N>
+std::array<std::uint8_t, N> runtime(const std::array<std::uint8_t, N>& a) {
+    std::array<std::uint8_t, N> out{};
+    volatile std::uint8_t tmp = 0;
+    for (std::size_t i = 0; i < N; ++i) {
+        tmp = a[i];
+        out[i] = tmp;
+    }
+    return out;
+}
+
+// Decodes and encodes through every kind of codec; returns the number of wrong results.
+int failures() {
+    int failed = 0;
+    const auto expect = [&](bool ok) { failed += ok ? 0 : 1; };
+
+    // BuWizz3 status (records, arrays, optional blocks): decode, then encode back.
+    std::array<std::uint8_t, 54> s{};
+    s[0] = 0x01;
+    s[10] = 0x10; s[11] = 0x00; s[12] = 0xF0; s[13] = 0xFF; s[14] = 0xF0; s[15] = 0x7F;
+    const std::uint8_t m3[8] = {0x4B, 0xFE, 0xA6, 0xFF, 0x18, 0xFC, 0xFF, 0xFF};
+    for (std::size_t i = 0; i < 8; ++i) s[38 + i] = m3[i];
+    const auto in = runtime(s);
+    const auto st = robowire::decode<bw::status>(in);
+    expect(st && st->accel_raw == std::array<std::int16_t, 3>{16, -16, 0x7FF0} &&
+           st->pu_motors[2] == bw::pu_motor{0x4B, -2, -90, -1000});
+    if (st) {
+        const auto back = robowire::encode(*st);
+        expect(back && back->size() == in.size() && std::equal(in.begin(), in.end(), back->begin()));
+    }
+    const auto n = bw::decode_notification(in);
+    expect(n && n->index() == 0);
+    // An error, with its offset: motor data power[3] is -128.
+    const auto bad = runtime(std::array<std::uint8_t, 9>{0x30, 1, 2, 3, 0x80, 5, 6, 0, 0});
+    expect(bw::decode_command(bad).code() == robowire::errc::value_out_of_range &&
+           robowire::detail::held_error(bw::decode_command(bad)).offset == 4);
+
+    // OSP: dispatch, encode, and the stream scanner over a frame split in two chunks.
+    const auto frame = runtime(std::array<std::uint8_t, 10>{0xFF, 0xAA, 0x02, 0x14, 0x03, 0x05, 0x00, 0x00, 0x55, 0x77});
+    const auto d = osp::decode(frame);
+    expect(d && d.frame() && d.frame()->command == 0x14);
+    if (d) {
+        const auto e = osp::encode(*d);
+        expect(e && std::equal(frame.begin(), frame.end(), e->begin()));
+    }
+    osp::scanner sc;
+    int found = 0;
+    sc.feed(std::span<const std::uint8_t>(frame).first(3), [&](osp::scanner::frame_bytes) { ++found; });
+    sc.feed(std::span<const std::uint8_t>(frame).subspan(3), [&](osp::scanner::frame_bytes) { ++found; });
+    expect(found == 1 && sc.frames() == 1);
+
+    // NAVBOT: a 40-byte payload in three frames, reassembled.
+    std::array<std::uint8_t, 40> payload{};
+    for (std::size_t i = 0; i < payload.size(); ++i) payload[i] = static_cast<std::uint8_t>(i + 1);
+    const auto frames = nb::make_frames(0x03, payload);
+    nb::reassembler<60> r;
+    robowire::result<nb::reassembly> last = nb::reassembly::need_more;
+    if (frames)
+        for (const auto& f : *frames) last = r.push(f.span());
+    expect(frames && frames->size() == 3 && last && *last == nb::reassembly::complete &&
+           std::equal(payload.begin(), payload.end(), r.payload().begin()));
+    return failed;
+}
+
+// Addresses of the codecs' out-of-line functions as this file calls them: the
+// two files of a program must call their own (different addresses).
+std::array<std::uintptr_t, 3> codec_addresses() {
+    using encoded = robowire::result<robowire::bytes<robowire::max_size_v<bw::status>>>;
+    encoded (*const encode_status)(const bw::status&) noexcept = &robowire::encode<bw::status>;
+    return {reinterpret_cast<std::uintptr_t>(&robowire::decode<bw::status>),
+            reinterpret_cast<std::uintptr_t>(encode_status),
+            reinterpret_cast<std::uintptr_t>(&osp::decode<osp::message>)};
+}
+
+}  // namespace MIXED_MODES_FILE
