@@ -80,11 +80,3 @@
 #else
 #define ROBOWIRE_NO_UNROLL
 #endif
-
-namespace robowire::detail {
-// x itself, as an expression that depends on D: a call taking it is resolved
-// when the enclosing template is instantiated, not where it is written, so
-// that a header's templates instantiate no codec until a program calls them.
-template <class D, class T>
-constexpr const T& deferred(const T& x) noexcept { return x; }
-}  // namespace robowire::detail
