@@ -51,7 +51,7 @@ public:
         } else {  // two fixed-size copies, not a byte loop that checks the end at every byte
             const std::size_t left = from < payload_.size() ? payload_.size() - from : 0;
             codec::copy_small(out.data() + 5, reinterpret_cast<const std::uint8_t*>(payload_.data() + from),
-                               left < payload_size ? left : payload_size);
+                              left < payload_size ? left : payload_size);
         }
         return out;
     }
