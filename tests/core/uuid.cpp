@@ -10,7 +10,7 @@ namespace {
 // BuWizz3 service: on-air bytes as printed in its document, least significant first.
 constexpr std::array<std::uint8_t, 16> on_air{0x93, 0x6E, 0x67, 0xB1, 0x19, 0x99, 0xB3, 0x88,
                                               0x81, 0x44, 0xFB, 0x74, 0xD1, 0x92, 0x05, 0x50};
-constexpr auto service = detail::uuid_literal("500592d1-74fb-4481-88b3-9919b1676e93");
+constexpr auto service = uuid_literal("500592d1-74fb-4481-88b3-9919b1676e93");
 constexpr bool chars_are(const uuid128& u, std::string_view s) {
     const auto c = u.to_chars();
     return std::string_view(c.data(), c.size()) == s;

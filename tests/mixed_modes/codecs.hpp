@@ -54,7 +54,7 @@ int failures() {
     // An error, with its offset: motor data power[3] is -128.
     const auto bad = runtime(std::array<std::uint8_t, 9>{0x30, 1, 2, 3, 0x80, 5, 6, 0, 0});
     expect(bw::decode_command(bad).code() == robowire::errc::value_out_of_range &&
-           robowire::detail::held_error(bw::decode_command(bad)).offset == 4);
+           robowire::codec::unchecked_error(bw::decode_command(bad)).offset == 4);
 
     // OSP: dispatch, encode, and the stream scanner over a frame split in two chunks.
     const auto frame = runtime(std::array<std::uint8_t, 10>{0xFF, 0xAA, 0x02, 0x14, 0x03, 0x05, 0x00, 0x00, 0x55, 0x77});

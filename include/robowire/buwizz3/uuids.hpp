@@ -11,7 +11,7 @@ namespace robowire::buwizz3 {
 
 // Service 500592d1-74fb-4481-88b3-9919b1676e93; its document prints the
 // on-air order 93:6E:67:B1:19:99:B3:88:81:44:FB:74:D1:92:05:50.
-inline constexpr uuid128 service_uuid = robowire::detail::uuid_literal("500592d1-74fb-4481-88b3-9919b1676e93");
+inline constexpr uuid128 service_uuid = uuid_literal("500592d1-74fb-4481-88b3-9919b1676e93");
 // Characteristics: the service UUID with bytes 2-3 replaced.
 inline constexpr uuid128 application_uuid = service_uuid.with_short_value(0x2901);  // commands + status (write, notify)
 inline constexpr uuid128 bootloader_uuid = service_uuid.with_short_value(0x8000);   // firmware update (write, notify)

@@ -17,7 +17,7 @@
 
 namespace robowire {
 
-namespace detail {
+namespace codec {
 // Copies n <= 16 bytes. At run time: two fixed-size (overlapping) copies,
 // never a call to memcpy.
 constexpr void copy_small(std::uint8_t* to, const std::uint8_t* from, std::size_t n) noexcept {
@@ -35,6 +35,8 @@ constexpr void copy_small(std::uint8_t* to, const std::uint8_t* from, std::size_
     else if (n >= 2) pair(std::integral_constant<std::size_t, 2>{});
     else if (n == 1) to[0] = from[0];
 }
+}  // namespace codec
+namespace detail {
 // n bytes at a and at b are equal (memcmp at run time, as std::equal does).
 constexpr bool same_bytes(const std::uint8_t* a, const std::uint8_t* b, std::size_t n) noexcept {
     if (std::is_constant_evaluated()) {
@@ -48,14 +50,14 @@ constexpr bool same_bytes(const std::uint8_t* a, const std::uint8_t* b, std::siz
 
 template <std::size_t N>
 class bytes;
-namespace detail {
-// Sets the size of an empty bytes whose first n bytes (n <= N) the caller has
+namespace codec {
+// Sets the size of a bytes<N> whose first n bytes (n <= N) the caller has
 // written through data(): no clamp, no zero fill (the codecs' encoders).
 template <std::size_t N>
 constexpr void set_written_size(bytes<N>& b, std::size_t n) noexcept;
 // Tag of the bytes constructor that leaves the bytes and the size unset.
 struct unset_t {};
-}  // namespace detail
+}  // namespace codec
 
 // Up to N bytes, stored inline. Unused capacity is always zero, so the default
 // comparison compares exactly the used bytes.
@@ -68,8 +70,8 @@ public:
 
     constexpr bytes() noexcept : data_{}, size_(0) {}
     // Bytes and size unset: for an encoder that then writes all N bytes and
-    // calls detail::set_written_size (nothing is cleared first).
-    constexpr explicit bytes(detail::unset_t) noexcept {}
+    // calls codec::set_written_size (nothing is cleared first).
+    constexpr explicit bytes(codec::unset_t) noexcept {}
     // Precondition: init.size() <= N (excess is dropped).
     constexpr bytes(std::initializer_list<std::uint8_t> init) noexcept : bytes() {
         append(std::span(init.begin(), init.size()));
@@ -129,14 +131,14 @@ public:
     }
 
 private:
-    std::array<std::uint8_t, N> data_;  // set by every constructor but bytes(unset_t)
+    std::array<std::uint8_t, N> data_;  // set by every constructor but bytes(codec::unset_t)
     std::size_t size_;
     template <std::size_t M>
-    friend constexpr void detail::set_written_size(bytes<M>& b, std::size_t n) noexcept;
+    friend constexpr void codec::set_written_size(bytes<M>& b, std::size_t n) noexcept;
 };
 
 template <std::size_t N>
-constexpr void detail::set_written_size(bytes<N>& b, std::size_t n) noexcept { b.size_ = n; }
+constexpr void codec::set_written_size(bytes<N>& b, std::size_t n) noexcept { b.size_ = n; }
 
 // Equal when sizes and used bytes are equal (capacities may differ).
 template <std::size_t N, std::size_t M>

@@ -125,10 +125,3 @@ namespace robowire { struct error; }
 void ROBOWIRE_BAD_RESULT_ACCESS_HANDLER(robowire::error) noexcept;
 #endif
 
-namespace robowire::detail {
-// x itself, as an expression that depends on D: a call taking it is resolved
-// when the enclosing template is instantiated, not where it is written, so
-// that a header's templates instantiate no codec until a program calls them.
-template <class D, class T>
-constexpr const T& deferred(const T& x) noexcept { return x; }
-}  // namespace robowire::detail

@@ -23,11 +23,36 @@ template <class M>
     return in.size();
 }
 
+namespace codec::inline ROBOWIRE_MODE_NAMESPACE {
+// The first fixed byte of M among K... (indices into table_v<M>.fixed) that
+// `in` has and gets wrong, as an error (code ok if none); bytes past the end
+// of `in` are not checked. Skip: the offset of a fixed byte not to check
+// (matched by a dispatcher already).
+template <class M, std::size_t Skip = detail::no_offset, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE constexpr error check_fixed(std::span<const std::uint8_t> in,
+                                                   std::index_sequence<K...>) noexcept {
+    error e{};
+    (void)(detail::fixed_wrong<M, Skip, K>(in, e) || ...);
+    return e;
+}
+
+// M's fields from `in`, without the fixed-byte and length checks: for
+// dispatchers that have checked both already (`in` holds at least
+// max_size_v<M> bytes). Returns the first field error, or errc::ok.
+template <described M>
+ROBOWIRE_ALWAYS_INLINE constexpr error decode_fields(M& out, std::span<const std::uint8_t> in) noexcept {
+    error err{};
+    (void)detail::decode_record<M>(out, in.first(table_v<M>.max_size()), 0, err,
+                                   std::make_index_sequence<detail::field_count_v<M>>{});
+    return err;
+}
+}  // namespace codec::inline ROBOWIRE_MODE_NAMESPACE
+
 namespace detail::inline ROBOWIRE_MODE_NAMESPACE {
 // too_short (at the input's end) or too_long (at the largest size); out of
 // line, so that the good path sets up no error.
 ROBOWIRE_COLD constexpr error length_error(std::size_t size, std::size_t min, std::size_t max) noexcept {
-    return size < min ? fail_at(errc::too_short, size) : fail_at(errc::too_long, max);
+    return size < min ? codec::fail_at(errc::too_short, size) : codec::fail_at(errc::too_long, max);
 }
 // The fields of M, from an input whose fixed bytes and length are checked.
 template <class M>
@@ -44,11 +69,12 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, std::span<const std::
 template <std::size_t Known, class M>
 ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const std::uint8_t> in) noexcept {
     constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input();
-    if (const error e = check_fixed<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{}); e.code != errc::ok)
+    if (const error e = codec::check_fixed<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{});
+        e.code != errc::ok)
         return e;
     if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // no call
-        if (in.size() < min) return fail_at(errc::too_short, in.size());
-        if (in.size() > max) return fail_at(errc::too_long, max);
+        if (in.size() < min) return codec::fail_at(errc::too_short, in.size());
+        if (in.size() > max) return codec::fail_at(errc::too_long, max);
     } else if (in.size() < min || in.size() > max) [[unlikely]] {
         return length_error(in.size(), min, max);
     }
@@ -77,7 +103,7 @@ template <described M>
 template <described M>
 [[nodiscard]] constexpr result<M> decode(std::span<const std::uint8_t> in) noexcept {
     result<M> r = detail::in_place_result<M>();  // built in place: every return below returns r
-    if (const error e = decode_into(detail::built_value(r), in); e.code != errc::ok) r = e;
+    if (const error e = decode_into(codec::unchecked_value(r), in); e.code != errc::ok) r = e;
     return r;
 }
 }  // inline namespace ROBOWIRE_MODE_NAMESPACE

@@ -17,7 +17,7 @@
 
 namespace robowire {
 
-namespace detail {
+namespace codec {
 // Makes alternative I of v (default value) and returns it. With clang,
 // constant evaluation assigns a new variant instead: clang 14 cannot evaluate
 // libstdc++'s emplace. Not with g++, which can: there that branch, never
@@ -47,23 +47,28 @@ inline constexpr void visit_held(Variant& v, F&& f) {
     visit_held(v, f, std::make_index_sequence<std::variant_size_v<std::remove_const_t<Variant>>>{});
 }
 
-// Not constexpr: reached at compile time, it is the compile error (two
-// alternatives of a variant have the same key: the second could never be decoded).
-inline void variant_alternatives_share_a_key(std::string_view /*first_alternative*/, int /*key*/) noexcept {}
-
+// The value of M's fixed byte at key_offset (its command, for a dispatcher);
+// -1: M has no fixed byte there.
 template <class M>
-constexpr int key_of(std::size_t key_offset) noexcept {  // -1: M has no fixed byte there
+constexpr int key_of(std::size_t key_offset) noexcept {
     for (const auto& b : table_v<M>.fixed)
         if (b.offset == key_offset) return b.value;
     return -1;
 }
+}  // namespace codec
+
+namespace detail {
+// Not constexpr: reached at compile time, it is the compile error (two
+// alternatives of a variant have the same key: the second could never be decoded).
+inline void variant_alternatives_share_a_key(std::string_view /*first_alternative*/, int /*key*/) noexcept {}
+
 // Alternative index for each value of the key byte (variant_size: none).
 template <class Variant, std::size_t KeyOffset>
 inline constexpr auto key_index_v = [] {
     constexpr std::size_t count = std::variant_size_v<Variant>;
     static_assert(count < 255, "decode_variant: too many alternatives");
     const auto keys = []<std::size_t... I>(std::index_sequence<I...>) {
-        return std::array<int, count>{key_of<std::variant_alternative_t<I, Variant>>(KeyOffset)...};
+        return std::array<int, count>{codec::key_of<std::variant_alternative_t<I, Variant>>(KeyOffset)...};
     }(std::make_index_sequence<count>{});
     std::array<std::uint8_t, 256> index{};
     index.fill(static_cast<std::uint8_t>(count));
@@ -109,8 +114,8 @@ constexpr std::size_t index_of_key(std::uint8_t key) noexcept {
 // Makes alternative I in r (see decode_variant_at) and returns it.
 template <std::size_t I, class Variant>
 ROBOWIRE_ALWAYS_INLINE constexpr auto& make_alternative(result<Variant>& r) noexcept {
-    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) return emplace_alternative<I>(built_value(r));  // r holds a value
-    else return *std::get_if<I>(&build_value(r, std::in_place_index<I>));                 // r holds an error
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) return codec::emplace_alternative<I>(codec::unchecked_value(r));  // holds a value
+    else return *std::get_if<I>(&build_value(r, std::in_place_index<I>));  // r holds an error
 }
 // Makes alternative I of r's variant and decodes `in` into it, in place.
 // Checked: fixed bytes and length checked already (see check_alternative).
@@ -146,15 +151,15 @@ ROBOWIRE_ALWAYS_INLINE constexpr error check_alternative(std::size_t index, std:
                                                          std::index_sequence<I...>) noexcept {
     error e{};
     (void)(((fixed_count_v<std::variant_alternative_t<I, Variant>> > 1 && index == I)
-                ? (e = check_fixed<std::variant_alternative_t<I, Variant>, KeyOffset>(
+                ? (e = codec::check_fixed<std::variant_alternative_t<I, Variant>, KeyOffset>(
                        in, std::make_index_sequence<fixed_count_v<std::variant_alternative_t<I, Variant>>>{}),
                    true)
                 : false) ||
            ...);
     if (e.code != errc::ok) return e;
     const auto& size = size_limits<Variant>::value[index];
-    if (in.size() < size[0]) return fail_at(errc::too_short, in.size());
-    if (in.size() > size[1]) return fail_at(errc::too_long, size[1]);
+    if (in.size() < size[0]) return codec::fail_at(errc::too_short, in.size());
+    if (in.size() > size[1]) return codec::fail_at(errc::too_long, size[1]);
     return e;
 }
 }  // inline namespace ROBOWIRE_MODE_NAMESPACE
@@ -246,11 +251,11 @@ template <class... M>
 [[nodiscard]] constexpr result<bytes<variant_max_size_v<std::variant<M...>>>> encode(const std::variant<M...>& v) noexcept {
     using out_t = bytes<variant_max_size_v<std::variant<M...>>>;
     result<out_t> r = detail::in_place_result<out_t>();
-    auto& b = detail::built_value(r);  // each message is encoded straight into it
+    auto& b = codec::unchecked_value(r);  // each message is encoded straight into it
     std::size_t n = 0;
     const error e = detail::encode_held(v, b.data(), out_t::capacity(), n, std::index_sequence_for<M...>{});
     if (e.code != errc::ok) r = e;
-    else detail::set_written_size(b, n);
+    else codec::set_written_size(b, n);
     return r;
 }
 }  // inline namespace ROBOWIRE_MODE_NAMESPACE

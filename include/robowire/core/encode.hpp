@@ -16,6 +16,21 @@
 
 namespace robowire {
 
+namespace codec::inline ROBOWIRE_MODE_NAMESPACE {
+// Checks M's fields in m (ranges, enums, text without NUL), in table order:
+// false at the first error, which is stored in err. Pair with store_fields.
+template <described M>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_fields(const M& m, error& err) noexcept {
+    return detail::check_record<M>(m, 0, err, std::make_index_sequence<detail::field_count_v<M>>{});
+}
+// Writes M's fields of m, checked by check_fields, into `out` (at least
+// max_size_v<M> bytes; fixed and reserved bytes are not written).
+template <described M>
+ROBOWIRE_ALWAYS_INLINE constexpr void store_fields(const M& m, std::span<std::uint8_t> out) noexcept {
+    detail::store_record<M>(m, out, 0, std::make_index_sequence<detail::field_count_v<M>>{});
+}
+}  // namespace codec::inline ROBOWIRE_MODE_NAMESPACE
+
 namespace detail::inline ROBOWIRE_MODE_NAMESPACE {
 // Encodes m into out_data (at most out_size bytes) and sets `written`: the
 // error, if any, is returned in a register and the output is left unchanged.
@@ -26,11 +41,12 @@ constexpr error encode_into(const M& m, std::uint8_t* out_data, std::size_t out_
     const std::span<std::uint8_t> out(out_data, out_size);
     constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
     auto size = encoded_size(m, fields);
-    if (!size) return held_error(size);
+    if (!size) return codec::unchecked_error(size);
     error err{};
     if (!check_record<M>(m, 0, err, fields)) return err;
-    if (built_value(size) > out.size()) return fail_at(errc::buffer_too_small, built_value(size));
-    const auto dst = out.first(built_value(size));
+    if (codec::unchecked_value(size) > out.size())
+        return codec::fail_at(errc::buffer_too_small, codec::unchecked_value(size));
+    const auto dst = out.first(codec::unchecked_value(size));
     clear_bytes<M>(dst);
     write_fixed<M>(dst, std::make_index_sequence<fixed_count_v<M>>{});
     if constexpr (sizeof(M) > 16 && !ROBOWIRE_OPTIMIZE_SIZE) {
@@ -39,7 +55,7 @@ constexpr error encode_into(const M& m, std::uint8_t* out_data, std::size_t out_
     } else {
         store_record<M>(m, dst, 0, fields);  // a few bytes: copied as they are
     }
-    written = built_value(size);
+    written = codec::unchecked_value(size);
     return err;
 }
 }  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE
@@ -61,14 +77,14 @@ template <described M>
 [[nodiscard]] constexpr result<bytes<max_size_v<M>>> encode(const M& m) noexcept {
     using out_t = bytes<max_size_v<M>>;
     // A message of one size writes every byte (cleared, then fields): nothing to clear first.
-    using init = std::conditional_t<min_size_v<M> == max_size_v<M>, detail::unset_t, out_t>;
+    using init = std::conditional_t<min_size_v<M> == max_size_v<M>, codec::unset_t, out_t>;
     result<out_t> r{std::in_place, init{}};
-    auto& b = detail::built_value(r);
+    auto& b = codec::unchecked_value(r);
     std::size_t n = 0;
     if (const error e = detail::encode_into(m, b.data(), max_size_v<M>, n); e.code != errc::ok)
         r = e;
     else
-        detail::set_written_size(b, n);
+        codec::set_written_size(b, n);
     return r;
 }
 }  // inline namespace ROBOWIRE_MODE_NAMESPACE

@@ -201,16 +201,22 @@ namespace detail {
 struct value_init_t {
     explicit value_init_t() = default;
 };
-// The value of a result that the codec itself has just built holding one:
+}  // namespace detail
+// Building blocks for protocol headers (docs/extending.md): what the generic
+// codec does, for a protocol's own dispatchers and encoders.
+namespace codec {
+// The value of a result known to hold one (the caller has just built it so):
 // no access check (at -Os the check is a call that is not folded away).
 template <class T>
-constexpr T& built_value(result<T>& r) noexcept;
+constexpr T& unchecked_value(result<T>& r) noexcept;
+// The error of a result known to hold one (the caller has just tested it): no access check.
+template <class T>
+constexpr error unchecked_error(const result<T>& r) noexcept;
+}  // namespace codec
+namespace detail {
 // Makes r hold T(arg), whatever it held, and returns the value.
 template <class T, class A>
 constexpr T& build_value(result<T>& r, const A& arg) noexcept;
-// The error of a result the caller has just seen holding one: no access check.
-template <class T>
-constexpr error held_error(const result<T>& r) noexcept;
 }  // namespace detail
 
 // Either a T or an error; they share storage. T must be trivially copyable
@@ -271,11 +277,11 @@ public:
 
 private:
     template <class U>
-    friend constexpr U& detail::built_value(result<U>& r) noexcept;
+    friend constexpr U& codec::unchecked_value(result<U>& r) noexcept;
     template <class U, class A>
     friend constexpr U& detail::build_value(result<U>& r, const A& arg) noexcept;
     template <class U>
-    friend constexpr robowire::error detail::held_error(const result<U>& r) noexcept;
+    friend constexpr robowire::error codec::unchecked_error(const result<U>& r) noexcept;
     constexpr void check(bool want_value) const noexcept(detail::access_noexcept) {
         if (ok_ == want_value) return;
         const robowire::error e = ok_ ? robowire::error{} : error_;
@@ -309,7 +315,7 @@ private:
 };
 
 template <class T>
-constexpr T& detail::built_value(result<T>& r) noexcept { return r.value_.v; }
+constexpr T& codec::unchecked_value(result<T>& r) noexcept { return r.value_.v; }
 template <class T, class A>
 constexpr T& detail::build_value(result<T>& r, const A& arg) noexcept {
     if (std::is_constant_evaluated()) {
@@ -321,17 +327,23 @@ constexpr T& detail::build_value(result<T>& r, const A& arg) noexcept {
     return r.value_.v;
 }
 template <class T>
-constexpr error detail::held_error(const result<T>& r) noexcept { return r.error_; }
+constexpr error codec::unchecked_error(const result<T>& r) noexcept { return r.error_; }
 
 // Shorthand for returning an error (offsets past 65535 become 65535).
 constexpr error fail(errc code, std::size_t offset) noexcept {
     return error{code, static_cast<std::uint16_t>(offset < 0xFFFF ? offset : 0xFFFF)};
 }
-namespace detail {
+namespace codec {
 // An error at an offset inside a message, which its table keeps below 65536
-// (detail/check.hpp): no clamp.
+// (checked when the table is built): no clamp, unlike fail().
 constexpr error fail_at(errc code, std::size_t offset) noexcept { return error{code, static_cast<std::uint16_t>(offset)}; }
-}  // namespace detail
+
+// x itself, as an expression that depends on D: a call taking it is resolved
+// when the enclosing template is instantiated, not where it is written, so
+// that a header's templates instantiate no codec until a program calls them.
+template <class D, class T>
+constexpr const T& deferred(const T& x) noexcept { return x; }
+}  // namespace codec
 
 namespace detail::inline ROBOWIRE_MODE_NAMESPACE {
 // A value-holding result for a codec that then writes every member; under

@@ -83,12 +83,11 @@ private:
     }
 };
 
-namespace detail {
-// Compile-time parse; a malformed literal does not compile.
+// A UUID from its canonical string ("xxxxxxxx-xxxx-..."), parsed at compile
+// time: a malformed string does not compile.
 consteval uuid128 uuid_literal(std::string_view s) {
     const auto r = uuid128::parse(s);
     return r.value();
 }
-}  // namespace detail
 
 }  // namespace robowire

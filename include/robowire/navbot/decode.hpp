@@ -24,10 +24,10 @@ template <class Message = message>
     using maneuver_t = std::variant_alternative_t<0, Message>;
     using frame_t = std::variant_alternative_t<1, Message>;
     const auto f = robowire::decode<frame_t>(in);
-    if (!f) return robowire::detail::held_error(f);
+    if (!f) return codec::unchecked_error(f);
     if (f->command == command::maneuver) {
         const auto m = robowire::decode<maneuver_t>(in);
-        if (!m) return robowire::detail::held_error(m);
+        if (!m) return codec::unchecked_error(m);
         return Message{*m};
     }
     return Message{*f};

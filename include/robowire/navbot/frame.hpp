@@ -57,9 +57,9 @@ constexpr std::string_view length_error_text(std::size_t input_size) noexcept {
 
 // BLE: advertised name prefix, service and characteristics.
 inline constexpr std::string_view name_prefix = "navbot_es02-";
-inline constexpr uuid128 service_uuid = robowire::detail::uuid_literal("6e400011-b5a3-f393-e0a9-e50e24dcca9e");
-inline constexpr uuid128 write_uuid = robowire::detail::uuid_literal("6e400012-b5a3-f393-e0a9-e50e24dcca9e");   // app -> robot
-inline constexpr uuid128 notify_uuid = robowire::detail::uuid_literal("6e400013-b5a3-f393-e0a9-e50e24dcca9e");  // robot -> app (echoes)
+inline constexpr uuid128 service_uuid = uuid_literal("6e400011-b5a3-f393-e0a9-e50e24dcca9e");
+inline constexpr uuid128 write_uuid = uuid_literal("6e400012-b5a3-f393-e0a9-e50e24dcca9e");   // app -> robot
+inline constexpr uuid128 notify_uuid = uuid_literal("6e400013-b5a3-f393-e0a9-e50e24dcca9e");  // robot -> app (echoes)
 
 // Is `name` a NAVBOT-ES02 name ("navbot_es02-" + suffix)?
 constexpr bool is_navbot_name(std::string_view name) noexcept {

@@ -98,7 +98,7 @@ inline namespace ROBOWIRE_MODE_NAMESPACE {
 template <class Deferred = void>
 [[nodiscard]] constexpr result<bytes<frame_size>> encode(const maneuver& m,
                                                          sign_encoding enc = sign_encoding::twos_complement) noexcept {
-    auto r = robowire::encode(robowire::detail::deferred<Deferred>(m));
+    auto r = robowire::encode(codec::deferred<Deferred>(m));
     if (r && enc == sign_encoding::sign_magnitude) impl::convert_signed<true>(r->span());
     return r;
 }
@@ -109,11 +109,11 @@ template <class Deferred = void>
 [[nodiscard]] constexpr result<maneuver> decode_maneuver(std::span<const std::uint8_t> in,
                                                          sign_encoding enc = sign_encoding::twos_complement) noexcept {
     if (enc == sign_encoding::twos_complement || in.size() != frame_size)
-        return robowire::decode<maneuver>(robowire::detail::deferred<Deferred>(in));
+        return robowire::decode<maneuver>(codec::deferred<Deferred>(in));
     std::array<std::uint8_t, frame_size> copy{};
     for (std::size_t i = 0; i < frame_size; ++i) copy[i] = in[i];
     impl::convert_signed<false, Deferred>(copy);
-    return robowire::decode<maneuver>(robowire::detail::deferred<Deferred>(std::span<const std::uint8_t>(copy)));
+    return robowire::decode<maneuver>(codec::deferred<Deferred>(std::span<const std::uint8_t>(copy)));
 }
 }  // inline namespace ROBOWIRE_MODE_NAMESPACE
 

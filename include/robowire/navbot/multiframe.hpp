@@ -53,8 +53,8 @@ public:
                 out[5 + k] = static_cast<std::uint8_t>(payload_[from + k]);
         } else {  // two fixed-size copies, not a byte loop that checks the end at every byte
             const std::size_t left = from < payload_.size() ? payload_.size() - from : 0;
-            detail::copy_small(out.data() + 5, reinterpret_cast<const std::uint8_t*>(payload_.data() + from),
-                               left < payload_size ? left : payload_size);
+            codec::copy_small(out.data() + 5, reinterpret_cast<const std::uint8_t*>(payload_.data() + from),
+                              left < payload_size ? left : payload_size);
         }
         return out;
     }
@@ -170,8 +170,8 @@ template <std::size_t Capacity>
 class reassembler {
 public:
     constexpr result<reassembly> push(std::span<const std::uint8_t> frame_bytes) noexcept {
-        const auto f = robowire::decode<frame>(robowire::detail::deferred<reassembler>(frame_bytes));
-        if (!f) return robowire::detail::held_error(f);
+        const auto f = robowire::decode<frame>(codec::deferred<reassembler>(frame_bytes));
+        if (!f) return codec::unchecked_error(f);
         return push(*f);
     }
 

@@ -50,7 +50,7 @@ namespace impl {
 // DEV << 8 | CMD of message M (its fixed bytes 2 and 3).
 template <class M>
 constexpr std::uint16_t key_of() noexcept {
-    return static_cast<std::uint16_t>(robowire::detail::key_of<M>(2) << 8 | robowire::detail::key_of<M>(3));
+    return static_cast<std::uint16_t>(codec::key_of<M>(2) << 8 | codec::key_of<M>(3));
 }
 // DEV << 8 | CMD of each alternative, in flash (a local array would be copied to the stack).
 template <class Message, class = std::make_index_sequence<std::variant_size_v<Message>>>
@@ -86,16 +86,16 @@ inline namespace ROBOWIRE_MODE_NAMESPACE {
 // (out of line: the good path is one test per byte).
 ROBOWIRE_COLD constexpr error frame_error(std::span<const std::uint8_t> in) noexcept {
     constexpr auto all = std::make_index_sequence<markers.size()>{};
-    if (const error e = robowire::detail::check_fixed<osp::frame>(in, all)) return e;
-    if (in.size() < frame_size) return robowire::detail::fail_at(errc::too_short, in.size());
+    if (const error e = codec::check_fixed<osp::frame>(in, all)) return e;
+    if (in.size() < frame_size) return codec::fail_at(errc::too_short, in.size());
     return fail(errc::too_long, frame_size);
 }
 // Markers and length of any frame: the checks of decode_into<frame>, shared by every message.
 constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
     if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // a loop over the four
         for (const auto& m : markers)
-            if (m.offset < in.size() && in[m.offset] != m.value) return robowire::detail::fail_at(m.code, m.offset);
-        if (in.size() < frame_size) return robowire::detail::fail_at(errc::too_short, in.size());
+            if (m.offset < in.size() && in[m.offset] != m.value) return codec::fail_at(m.code, m.offset);
+        if (in.size() < frame_size) return codec::fail_at(errc::too_short, in.size());
         if (in.size() > frame_size) return fail(errc::too_long, frame_size);
         return {};
     } else {  // unrolled: faster on hosts
@@ -108,8 +108,8 @@ constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
 // Fixed bytes checked by the frame already: makes the message and decodes its fields in place.
 template <std::size_t I>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_message(decode_result& d, std::span<const std::uint8_t> in) noexcept {
-    auto& m = robowire::detail::emplace_alternative<I>(robowire::detail::built_value(d));
-    if (const error e = robowire::detail::decode_fields(m, in); e.code != errc::ok) d = e;
+    auto& m = codec::emplace_alternative<I>(codec::unchecked_value(d));
+    if (const error e = codec::decode_fields(m, in); e.code != errc::ok) d = e;
 }
 template <std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::uint16_t key, std::span<const std::uint8_t> in,
@@ -122,14 +122,13 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::uint1
 template <class M>
 ROBOWIRE_ALWAYS_INLINE constexpr error encode_fields(const M& m, std::span<std::uint8_t, frame_size> out) noexcept {
     static_assert(plain_frame<M>(), "osp: a message must be one 10-byte frame with the markers, DEV and CMD fixed");
-    constexpr auto fields = std::make_index_sequence<robowire::detail::field_count_v<M>>{};
     error err{};
-    if (robowire::detail::check_record<M>(m, 0, err, fields)) robowire::detail::store_record<M>(m, out, 0, fields);
+    if (codec::check_fields(m, err)) codec::store_fields(m, out);
     return err;
 }
 // b becomes the frame of a message with key DEV << 8 | CMD and no parameters.
 ROBOWIRE_SIZE_NOINLINE constexpr void write_frame(bytes<frame_size>& b, std::uint16_t key) noexcept {
-    robowire::detail::set_written_size(b, frame_size);
+    codec::set_written_size(b, frame_size);
     std::uint8_t* out = b.data();
     out[0] = start1;
     out[1] = start2;
@@ -182,17 +181,17 @@ template <class Message>
 // unknown_message for a variant left valueless by an exception.
 template <class Message = message>
 [[nodiscard]] constexpr result<bytes<frame_size>> encode(const std::type_identity_t<Message>& m) noexcept {
-    result<bytes<frame_size>> r{std::in_place, robowire::detail::unset_t{}};  // write_frame sets every byte
-    if constexpr (!robowire::detail::access_noexcept) {  // valueless only after an exception
-        if (m.valueless_by_exception()) {
-            r = fail(errc::unknown_message, 2);
-            return r;
-        }
+    result<bytes<frame_size>> r{std::in_place, codec::unset_t{}};  // write_frame sets every byte
+#if defined(__cpp_exceptions)  // valueless only after an exception
+    if (m.valueless_by_exception()) {
+        r = fail(errc::unknown_message, 2);
+        return r;
     }
-    auto& b = robowire::detail::built_value(r);
+#endif
+    auto& b = codec::unchecked_value(r);
     impl::write_frame(b, impl::keys_v<Message>[m.index()]);
     const auto out = std::span<std::uint8_t, frame_size>(b.data(), frame_size);
-    robowire::detail::visit_held(m, [&](const auto& x) {
+    codec::visit_held(m, [&](const auto& x) {
         if (const error e = impl::encode_fields(x, out)) r = e;
     });
     return r;
@@ -207,33 +206,32 @@ template <class Handler>
 [[nodiscard]] constexpr result<std::optional<bytes<frame_size>>> serve(std::span<const std::uint8_t> request,
                                                                        Handler&& handler) {
     result<std::optional<bytes<frame_size>>> r{std::in_place};  // no answer (yet)
-    auto d = decode(robowire::detail::deferred<Handler>(request));  // instantiated with serve
+    auto d = decode(codec::deferred<Handler>(request));  // instantiated with serve
     if (!d) {
-        r = robowire::detail::held_error(d);
+        r = codec::unchecked_error(d);
         return r;
     }
     const auto reply = [&r](const auto& answer) {  // encoded straight into r
-        auto& out = robowire::detail::built_value(r).emplace(robowire::detail::unset_t{});  // write_frame fills it
+        auto& out = codec::unchecked_value(r).emplace(codec::unset_t{});  // write_frame fills it
         impl::write_frame(out, impl::key_of<std::remove_cvref_t<decltype(answer)>>());
         if (const error e = impl::encode_fields(answer, std::span<std::uint8_t, frame_size>(out.data(), frame_size))) r = e;
     };
-    robowire::detail::visit_held(
-        robowire::detail::built_value(d), [&](const auto& msg) {
-            using M = std::remove_cvref_t<decltype(msg)>;
-            if constexpr (!std::is_invocable_v<Handler&, const M&>) {
-                r = fail(errc::unknown_message, 2);
+    codec::visit_held(codec::unchecked_value(d), [&](const auto& msg) {
+        using M = std::remove_cvref_t<decltype(msg)>;
+        if constexpr (!std::is_invocable_v<Handler&, const M&>) {
+            r = fail(errc::unknown_message, 2);
+        } else {
+            using R = std::invoke_result_t<Handler&, const M&>;
+            if constexpr (std::is_void_v<R>) {
+                handler(msg);
+            } else if constexpr (requires(const R& a) { a.has_value(); *a; }) {
+                const R a = handler(msg);
+                if (a) reply(*a);
             } else {
-                using R = std::invoke_result_t<Handler&, const M&>;
-                if constexpr (std::is_void_v<R>) {
-                    handler(msg);
-                } else if constexpr (requires(const R& a) { a.has_value(); *a; }) {
-                    const R a = handler(msg);
-                    if (a) reply(*a);
-                } else {
-                    reply(handler(msg));
-                }
+                reply(handler(msg));
             }
-        });
+        }
+    });
     return r;
 }
 }  // inline namespace ROBOWIRE_MODE_NAMESPACE

@@ -42,7 +42,7 @@ public:
             if (len_ != 0) {  // a partial candidate: complete it in one go if the chunk has the rest
                 const std::size_t had = len_, need = frame_size - had;
                 if (n - i >= need) {
-                    robowire::detail::copy_small(buf_.data() + had, p + i, need);
+                    codec::copy_small(buf_.data() + had, p + i, need);
                     if (buf_[1] == start2 && buf_[8] == end1 && buf_[9] == end2) {
                         len_ = 0;
                         ++frames_;
@@ -62,7 +62,7 @@ public:
             }
             if (n - i < frame_size) {  // a short tail from a start byte: kept whole as the partial candidate
                 len_ = n - i;
-                robowire::detail::copy_small(buf_.data(), p + i, len_);
+                codec::copy_small(buf_.data(), p + i, len_);
                 if (!partial_ok()) resync();
                 break;
             }

@@ -41,7 +41,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_scalar(E& v, std::span<const std::u
         else raw = load_le<typename W::raw_type>(in.data() + off);
         if constexpr (std::is_enum_v<E>) {
             const auto e = static_cast<E>(raw);
-            if (!is_valid_enum(e)) [[unlikely]] { err = fail_at(errc::invalid_enum, off); return false; }
+            if (!is_valid_enum(e)) [[unlikely]] { err = codec::fail_at(errc::invalid_enum, off); return false; }
             v = e;
         } else {
             constexpr range full = [] {  // what the wire bytes can hold
@@ -50,7 +50,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_scalar(E& v, std::span<const std::u
             }();
             if constexpr (Min > full.min || Max < full.max) {
                 if (!in_range<Min, Max, full.min, full.max>(raw)) [[unlikely]] {
-                    err = fail_at(errc::value_out_of_range, off);
+                    err = codec::fail_at(errc::value_out_of_range, off);
                     return false;
                 }
             }
@@ -107,7 +107,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::ui
     auto& member = m.*member_ptr;
     if constexpr (F::is_optional) {
         if (in.size() <= off) { member.reset(); return true; }  // absent
-        if (in.size() < off + F::size) { err = fail_at(errc::bad_length, off); return false; }
+        if (in.size() < off + F::size) { err = codec::fail_at(errc::bad_length, off); return false; }
         if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // decoded in place (on an error the message is unspecified)
             return decode_value<M, I>(member.emplace(), in, off, err);
         } else {
@@ -152,7 +152,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
         std::size_t len = 0;
         while (len < n && in[off + len] != 0) ++len;
         for (std::size_t i = len; i < n; ++i)
-            if (in[off + i] != 0) { err = fail_at(errc::bad_padding, off + i); return false; }
+            if (in[off + i] != 0) { err = codec::fail_at(errc::bad_padding, off + i); return false; }
         if (!std::is_constant_evaluated()) {  // straight from the input (char may view any bytes)
             v.assign(std::string_view(reinterpret_cast<const char*>(in.data() + off), len));
             return true;
@@ -193,22 +193,4 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool fixed_wrong(std::span<const std::uint8_t> 
         return false;
     }
 }
-// The first fixed byte of M that `in` has and gets wrong, as an error (code ok if none).
-// Skip: the offset of a fixed byte not to check (matched by a dispatcher already).
-template <class M, std::size_t Skip = no_offset, std::size_t... K>
-ROBOWIRE_ALWAYS_INLINE constexpr error check_fixed(std::span<const std::uint8_t> in, std::index_sequence<K...>) noexcept {
-    error e{};
-    (void)(fixed_wrong<M, Skip, K>(in, e) || ...);
-    return e;
-}
-
-// Fields only, no fixed-byte or length checks: for dispatchers that have
-// checked both already (`in` holds at least max_size() bytes).
-template <described M>
-ROBOWIRE_ALWAYS_INLINE constexpr error decode_fields(M& out, std::span<const std::uint8_t> in) noexcept {
-    error err{};
-    (void)decode_record<M>(out, in.first(table_v<M>.max_size()), 0, err, std::make_index_sequence<field_count_v<M>>{});
-    return err;
-}
-
 }  // namespace robowire::detail::inline ROBOWIRE_MODE_NAMESPACE

@@ -32,7 +32,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_scalar(const E& v, std::size_t off, 
     if constexpr (W::kind == wire_kind::f32le) {
         return true;
     } else if constexpr (std::is_enum_v<E>) {
-        if (!is_valid_enum(v)) [[unlikely]] { err = fail_at(errc::invalid_enum, off); return false; }
+        if (!is_valid_enum(v)) [[unlikely]] { err = codec::fail_at(errc::invalid_enum, off); return false; }
         return true;
     } else {
         if constexpr (W::kind == wire_kind::bits || std::is_same_v<E, bool> ||
@@ -44,7 +44,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_scalar(const E& v, std::size_t off, 
             else if constexpr (Min <= lo) valid = static_cast<std::int64_t>(v) <= Max;
             else valid = in_range<Min, Max, lo, hi>(static_cast<std::int64_t>(v));
             if (!valid) [[unlikely]] {
-                err = fail_at(errc::value_out_of_range, off);
+                err = codec::fail_at(errc::value_out_of_range, off);
                 return false;
             }
         }
@@ -125,7 +125,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off,
     } else if constexpr (W::kind == wire_kind::text) {
         const auto s = v.view();
         for (std::size_t i = 0; i < s.size(); ++i)
-            if (s[i] == '\0') { err = fail_at(errc::value_out_of_range, off + i); return false; }
+            if (s[i] == '\0') { err = codec::fail_at(errc::value_out_of_range, off + i); return false; }
         return true;
     } else if constexpr (W::kind == wire_kind::tail) {
         return true;

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Fails when a protocol header (include/robowire/<protocol>/*.hpp, the
+# umbrellas) names robowire::detail or includes core/detail/: protocols use
+# the public API (robowire, robowire::codec; docs/extending.md). Comments are
+# not searched. fuzz.hpp is no protocol: it reads the codec's internals.
+cd "$(dirname "$0")/../include/robowire" || exit 1
+headers=$(ls -- */*.hpp *.hpp | grep -v -e '^core/' -e '^fuzz\.hpp$')
+[ -n "$headers" ] || { echo "no protocol headers found"; exit 1; }
+found=$(for h in $headers; do
+  sed 's://.*$::' "$h" | grep -n -w 'detail' | sed "s|^|include/robowire/$h:|"
+done)
+if [ -n "$found" ]; then
+  echo "protocol headers use robowire::detail (use robowire::codec, docs/extending.md):"
+  echo "$found"
+  exit 1
+fi
+echo "$(echo "$headers" | wc -l) protocol headers, none uses robowire::detail"
