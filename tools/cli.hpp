@@ -87,7 +87,8 @@ struct protocol {
     outcome (*encode)(std::string_view message, const std::vector<std::pair<std::string, std::string>>& values);
 };
 // One per protocol, defined in tools/<protocol>.cpp (a new protocol needs only
-// its entry, and its declaration, in protocols.cpp).
+// its entry, and its declaration, in protocols.cpp: the commands' protocol
+// arguments, their help and the tool's messages come from protocols()).
 const protocol& buwizz3_protocol();
 outcome buwizz3_encode(std::string_view message, const std::vector<std::pair<std::string, std::string>>& values);  // buwizz3_encode.cpp
 const protocol& navbot_protocol();
@@ -95,6 +96,8 @@ const protocol& osp_protocol();
 // Every protocol, in `list` order (protocols.cpp); nullptr for an unknown name.
 std::span<const protocol* const> protocols();
 const protocol* find_protocol(std::string_view name);
+// Their names, "buwizz3, navbot or osp", for help texts and messages.
+std::string protocol_names();
 
 // ---- list_json.cpp
 // `list --json`: every protocol's tables (or the one named) as one JSON document (tools/schema.hpp).

@@ -290,7 +290,7 @@ public:
                 const std::string why = "line " + std::to_string(num) + ": which protocol? " +
                                         (pl.handle.empty() ? std::string("the line names no characteristic")
                                                            : "the " + source_ + " names attribute handles, not characteristic UUIDs") +
-                                        ": give buwizz3, navbot or osp (robowire decode buwizz3 --file " + name_ + ")";
+                                        ": give " + protocol_names() + " (robowire decode buwizz3 --file " + name_ + ")";
                 if (json_) out_line(dump({{"type", "error"}, {"line", num}, {"error", why}}));
                 err_line("error: " + why);
                 return exit_usage;
@@ -352,8 +352,8 @@ private:
         }
         if (!p) {
             fail(num, pl, nullptr,
-                 "which protocol? the line names no characteristic: give buwizz3, navbot or osp "
-                 "(robowire decode buwizz3 --file ...)",
+                 "which protocol? the line names no characteristic: give " + protocol_names() +
+                     " (robowire decode buwizz3 --file ...)",
                  {}, exit_usage);
             return;
         }

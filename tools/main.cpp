@@ -136,7 +136,7 @@ int run_decode(const decode_options& opt) {
         if (is_log_line(joined)) return decode_lines(pp, "the argument", joined, opt.json, direction_of(opt.direction), false);
         std::string error;
         if (!pp) {
-            err_line("error: decode needs a protocol before the bytes: buwizz3, navbot or osp (robowire decode --help)");
+            err_line("error: decode needs a protocol before the bytes: " + protocol_names() + " (robowire decode --help)");
             return exit_usage;
         }
         const auto b = parse_hex_text(joined, error);
@@ -297,13 +297,15 @@ int main(int argc, char** argv) {
         "Exit status: 0 ok; 1 bad input (the message names the problem, the byte and the field);\n"
         "2 usage error (unknown command, option, protocol, message or field; bad option value).\n"
         "Run robowire <command> --help for a command's options. Manual: docs/cli.md");
-    const std::vector<std::string> names = {"buwizz3", "navbot", "osp"};
+    std::vector<std::string> names;  // every protocol (tools/protocols.cpp)
+    for (const protocol* p : protocols()) names.emplace_back(p->name);
+    const std::string one_of = protocol_names();  // "buwizz3, navbot or osp"
 
     // list
     std::string list_protocol;
     bool list_fields = false, list_as_json = false;
     auto* list = app.add_subcommand("list", "every message: name, command byte(s), valid lengths; --fields: every field");
-    list->add_option("protocol", list_protocol, "buwizz3, navbot or osp (default: all)")->check(CLI::IsMember(names));
+    list->add_option("protocol", list_protocol, one_of + " (default: all)")->check(CLI::IsMember(names));
     list->add_flag("--fields", list_fields, "each field: name, byte offset, wire type, valid values, unit, flag bits; records expanded");
     list->add_flag("--json", list_as_json, "the tables as one JSON document, every field included (Python: robowire.schema())");
 
@@ -311,7 +313,7 @@ int main(int argc, char** argv) {
     decode_options dec_opt;
     auto* dec = app.add_subcommand("decode", "decode a frame from hex bytes (any spelling), or every frame of a file or log");
     dec->add_option("protocol", dec_opt.protocol,
-                    "buwizz3, navbot or osp (with --file, may be left out: each log line's characteristic UUID picks it)")
+                    one_of + " (with --file, may be left out: each log line's characteristic UUID picks it)")
         ->check(CLI::IsMember(names));
     dec->add_option("hex", dec_opt.hex, "bytes: \"01 6D\", 016D, 0x01,0x6D, 01-6D, 01:6D, (0x) 01-6D");
     dec->add_flag("--json", dec_opt.json, "one JSON object on stdout");
@@ -328,7 +330,7 @@ int main(int argc, char** argv) {
     std::string enc_protocol, enc_message;
     std::vector<std::string> enc_values;
     auto* enc = app.add_subcommand("encode", "build a frame from field values; prints hex");
-    enc->add_option("protocol", enc_protocol, "buwizz3, navbot or osp")->required()->check(CLI::IsMember(names));
+    enc->add_option("protocol", enc_protocol, one_of)->required()->check(CLI::IsMember(names));
     enc->add_option("message", enc_message, "message name (robowire list)")->required();
     enc->add_option("values", enc_values,
                     "name=value: arrays and records as comma lists in the order robowire list --fields shows, enums by name");
