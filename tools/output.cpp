@@ -22,8 +22,8 @@ bool print_json(const std::string& json, const std::string&) {
 }
 
 constexpr output_format formats[] = {
-    {"text", "text for people: a message as rows of fields, errors on stderr", print_text},
-    {"json", "JSON lines: one object per message, error, reassembly or counters, each with a \"type\" (docs/cli.md)", print_json},
+    {"text", "a message as rows of fields", print_text},
+    {"json", "one JSON object per line, each with a \"type\" (docs/cli.md)", print_json},
 };
 
 }  // namespace
