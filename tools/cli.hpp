@@ -1,6 +1,7 @@
 // robowire command-line tool: what its translation units share.
 //   hex.cpp        hex text in every common spelling; hex/binary detection
 //   render.cpp     a decoded message as text or JSON (nlohmann/json)
+//   output.cpp     the output formats (--format): text, json
 //   describe.hpp   templates over the library's tables (fields, lengths, errors, encode)
 //   buwizz3.cpp, navbot.cpp, osp.cpp   one protocol each, driven by its std::variant of messages
 //   buwizz3_encode.cpp                  BuWizz3's encoders (a translation unit of their own: compile time)
@@ -75,6 +76,23 @@ std::string render_json_error(std::string_view error, const std::vector<std::pai
 // {"type": "counters", name: value..., "input": input (when not empty)}.
 std::string render_json_counters(const std::vector<std::pair<std::string, std::uint64_t>>& counters, std::string_view input);
 
+// ---- output.cpp: the output formats of decode, scan and monitor (--format, --json).
+// What they print on stdout is a series of records, each given in two forms:
+// its JSON object (one line, as docs/cli.md describes it; every record has
+// one) and its text (lines with their newlines; empty: the record shows in
+// text on stderr only). A format prints one of them, or its own form made
+// from the JSON object. A new format is one entry in output.cpp's formats().
+struct output_format {
+    std::string_view name;
+    std::string_view help;  // for --format's help
+    // Prints one record and flushes stdout; true when it printed `text` (the
+    // caller then leaves the record off stderr, where it would repeat it).
+    bool (*print)(const std::string& json, const std::string& text);
+};
+std::span<const output_format> output_formats();  // the first is the default
+// The format named (nullptr: none).
+const output_format* find_output_format(std::string_view name);
+
 // ---- one protocol (buwizz3.cpp, navbot.cpp, osp.cpp)
 enum class direction { any, command, notification };
 struct protocol {
@@ -87,7 +105,8 @@ struct protocol {
     outcome (*encode)(std::string_view message, const std::vector<std::pair<std::string, std::string>>& values);
 };
 // One per protocol, defined in tools/<protocol>.cpp (a new protocol needs only
-// its entry, and its declaration, in protocols.cpp).
+// its entry, and its declaration, in protocols.cpp: the commands' protocol
+// arguments, their help and the tool's messages come from protocols()).
 const protocol& buwizz3_protocol();
 outcome buwizz3_encode(std::string_view message, const std::vector<std::pair<std::string, std::string>>& values);  // buwizz3_encode.cpp
 const protocol& navbot_protocol();
@@ -95,6 +114,8 @@ const protocol& osp_protocol();
 // Every protocol, in `list` order (protocols.cpp); nullptr for an unknown name.
 std::span<const protocol* const> protocols();
 const protocol* find_protocol(std::string_view name);
+// Their names, "buwizz3, navbot or osp", for help texts and messages.
+std::string protocol_names();
 
 // ---- list_json.cpp
 // `list --json`: every protocol's tables (or the one named) as one JSON document (tools/schema.hpp).
@@ -110,7 +131,8 @@ bool looks_like_text(std::span<const std::uint8_t> data);
 // characteristic UUID of each line picks the protocol). decode: results on
 // stdout, errors and a summary on stderr. scan: errors on stdout too, NAVBOT
 // messages reassembled, counters last. `name` names the input in messages.
-int decode_lines(const protocol* p, std::string_view name, std::string_view text, bool json, direction forced, bool scan);
+int decode_lines(const protocol* p, std::string_view name, std::string_view text, const output_format& out, direction forced,
+                 bool scan);
 
 // ---- more subcommands
 // Adds `robowire dissector <protocol> [--output DIR]` (dissector_command.cpp).

@@ -19,11 +19,6 @@ namespace {
 using json = nlohmann::ordered_json;
 
 std::string dump(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace); }
-void out_line(const std::string& s) {
-    std::fwrite(s.data(), 1, s.size(), stdout);
-    std::fputc('\n', stdout);
-    std::fflush(stdout);
-}
 void err_line(const std::string& s) { std::fprintf(stderr, "%s\n", s.c_str()); }
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
@@ -242,8 +237,8 @@ struct counters {
 
 class runner {
 public:
-    runner(const protocol* p, std::string_view name, direction forced, bool json_out, bool scan)
-        : p_(p), name_(name), forced_(forced), json_(json_out), scan_(scan) {}
+    runner(const protocol* p, std::string_view name, direction forced, const output_format& out, bool scan)
+        : p_(p), name_(name), forced_(forced), out_(out), scan_(scan) {}
 
     int run(std::string_view text) {
         std::vector<std::pair<std::size_t, parsed_line>> lines;
@@ -290,8 +285,8 @@ public:
                 const std::string why = "line " + std::to_string(num) + ": which protocol? " +
                                         (pl.handle.empty() ? std::string("the line names no characteristic")
                                                            : "the " + source_ + " names attribute handles, not characteristic UUIDs") +
-                                        ": give buwizz3, navbot or osp (robowire decode buwizz3 --file " + name_ + ")";
-                if (json_) out_line(dump({{"type", "error"}, {"line", num}, {"error", why}}));
+                                        ": give " + protocol_names() + " (robowire decode buwizz3 --file " + name_ + ")";
+                out_.print(dump({{"type", "error"}, {"line", num}, {"error", why}}), "");
                 err_line("error: " + why);
                 return exit_usage;
             }
@@ -315,7 +310,7 @@ public:
                                     (c_.other ? "; " + std::to_string(c_.other) +
                                                      (c_.other == 1 ? " value of another characteristic" : " values of other characteristics") + others
                                                : "") + ")";
-            if (json_) out_line(dump({{"type", "error"}, {"error", why}}));
+            out_.print(dump({{"type", "error"}, {"error", why}}), "");
             err_line("error: " + why);
             return exit_bad_input;
         }
@@ -352,8 +347,8 @@ private:
         }
         if (!p) {
             fail(num, pl, nullptr,
-                 "which protocol? the line names no characteristic: give buwizz3, navbot or osp "
-                 "(robowire decode buwizz3 --file ...)",
+                 "which protocol? the line names no characteristic: give " + protocol_names() +
+                     " (robowire decode buwizz3 --file ...)",
                  {}, exit_usage);
             return;
         }
@@ -367,13 +362,9 @@ private:
             fail(num, pl, p, o.error, o.hints, o.status);
         } else {
             ++c_.decoded;
-            if (json_) {
-                out_line(dump(with_line(json::parse(render_json(p->name, o)), num, pl)));
-            } else {
-                std::string head = "line " + std::to_string(num);
-                if (pl.dir != link_direction::unknown) head += " (" + std::string(direction_text(pl.dir)) + ")";
-                std::fputs((head + ": " + render_text(p->name, o)).c_str(), stdout);
-            }
+            std::string head = "line " + std::to_string(num);
+            if (pl.dir != link_direction::unknown) head += " (" + std::string(direction_text(pl.dir)) + ")";
+            out_.print(dump(with_line(json::parse(render_json(p->name, o)), num, pl)), head + ": " + render_text(p->name, o));
         }
         if (scan_ && p == &navbot_protocol() && pl.bytes.size() == robowire::navbot::frame_size) reassemble(num, pl);
     }
@@ -394,18 +385,16 @@ private:
               const std::vector<std::string>& hints, int status) {
         ++c_.errors;
         if (status > worst_) worst_ = status;
-        if (json_) {
-            json j = {{"type", "error"}, {"error", error}};
-            if (p) j["protocol"] = std::string(p->name);
-            if (!pl.bytes.empty()) j["bytes"] = hex_of(pl.bytes);
-            if (!hints.empty()) j["hints"] = hints;
-            out_line(dump(with_line(j, num, pl)));
+        json j = {{"type", "error"}, {"error", error}};
+        if (p) j["protocol"] = std::string(p->name);
+        if (!pl.bytes.empty()) j["bytes"] = hex_of(pl.bytes);
+        if (!hints.empty()) j["hints"] = hints;
+        std::string text;  // scan: errors among the messages on stdout; decode: on stderr only
+        if (scan_) {
+            text = "line " + std::to_string(num) + ": error: " + error + "\n";
+            for (const auto& h : hints) text += "line " + std::to_string(num) + ": hint: " + h + "\n";
         }
-        if (!json_ && scan_) {
-            out_line("line " + std::to_string(num) + ": error: " + error);
-            for (const auto& h : hints) out_line("line " + std::to_string(num) + ": hint: " + h);
-            return;
-        }
+        if (out_.print(dump(with_line(j, num, pl)), text)) return;
         err_line("error: line " + std::to_string(num) + ": " + error);
         for (const auto& h : hints) err_line("hint: line " + std::to_string(num) + ": " + h);
     }
@@ -471,11 +460,7 @@ private:
             }
             }
         }
-        if (json_) {
-            out_line(dump(with_line(j, num, pl)));
-        } else {
-            out_line("line " + std::to_string(num) + ": navbot reassembly: " + note);
-        }
+        out_.print(dump(with_line(j, num, pl)), "line " + std::to_string(num) + ": navbot reassembly: " + note + "\n");
     }
 
     void summary() {
@@ -494,8 +479,7 @@ private:
             text += (text.empty() ? "" : ", ") + name + " " + std::to_string(v);
         }
         if (scan_) {
-            if (json_) out_line(render_json_counters(cs, source_));
-            else out_line(text + "; " + name_ + " read as " + source_);
+            out_.print(render_json_counters(cs, source_), text + "; " + name_ + " read as " + source_ + "\n");
         } else {
             err_line(name_ + ": read as " + source_ + ": " + text);
         }
@@ -504,7 +488,8 @@ private:
     const protocol* p_;
     std::string name_;
     direction forced_;
-    bool json_, scan_;
+    const output_format& out_;
+    bool scan_;
     counters c_;
     int worst_ = exit_ok;
     std::string source_;
@@ -527,8 +512,9 @@ bool looks_like_text(std::span<const std::uint8_t> data) {
     return !data.empty();
 }
 
-int decode_lines(const protocol* p, std::string_view name, std::string_view text, bool json_lines, direction forced, bool scan) {
-    runner r(p, name, forced, json_lines, scan);
+int decode_lines(const protocol* p, std::string_view name, std::string_view text, const output_format& out, direction forced,
+                 bool scan) {
+    runner r(p, name, forced, out, scan);
     return r.run(text);
 }
 

@@ -33,16 +33,34 @@ void out_line(const std::string& s) {
 }
 void err_line(const std::string& s) { std::fprintf(stderr, "%s\n", s.c_str()); }
 
-int report(const protocol& p, const outcome& o, bool json) {
+int report(const protocol& p, const outcome& o, const output_format& out) {
     if (o.status != exit_ok) {
-        if (json) out_line(render_json_error(o.error, {{"protocol", std::string(p.name)}}));
+        out.print(render_json_error(o.error, {{"protocol", std::string(p.name)}}), "");
         err_line("error: " + o.error);
         for (const auto& h : o.hints) err_line("hint: " + h);
         return o.status;
     }
-    if (json) out_line(render_json(p.name, o));
-    else std::fputs(render_text(p.name, o).c_str(), stdout);
+    out.print(render_json(p.name, o), render_text(p.name, o));
     return exit_ok;
+}
+
+// --format, and --json as its short form: the format chosen.
+struct format_option {
+    std::string name;
+    bool json = false;
+    const output_format& get() const { return *find_output_format(json ? "json" : name.empty() ? output_formats()[0].name : name); }
+};
+// Adds --format and --json to `sub`; `what`: --json's help.
+void add_format_options(CLI::App& sub, format_option& f, const std::string& what) {
+    std::string help = "output format:";
+    std::vector<std::string> names;
+    for (const output_format& o : output_formats()) {
+        names.emplace_back(o.name);
+        help += std::string(names.size() == 1 ? " " : "; ") + std::string(o.name) + (names.size() == 1 ? " (default)" : "") + ", " +
+                std::string(o.help);
+    }
+    auto* format = sub.add_option("--format", f.name, help)->check(CLI::IsMember(names));
+    sub.add_flag("--json", f.json, what)->excludes(format);
 }
 
 // ---- input files: binary or hex text
@@ -90,7 +108,8 @@ struct decode_options {
     std::vector<std::string> hex;
     std::string file;
     std::string direction;
-    bool json = false, hex_file = false, binary_file = false;
+    format_option format;
+    bool hex_file = false, binary_file = false;
 };
 direction direction_of(const std::string& name) {
     return name == "command" ? direction::command : name == "notification" ? direction::notification : direction::any;
@@ -113,8 +132,8 @@ int run_decode(const decode_options& opt) {
         const std::string name = opt.file == "-" ? "stdin" : opt.file;
         // text (hex lines, an nRF Connect log): every line that holds a frame
         if (opt.hex_file || (!opt.binary_file && looks_like_text(raw)))
-            return decode_lines(pp, name, std::string_view(reinterpret_cast<const char*>(raw.data()), raw.size()), opt.json,
-                                direction_of(opt.direction), false);
+            return decode_lines(pp, name, std::string_view(reinterpret_cast<const char*>(raw.data()), raw.size()),
+                                opt.format.get(), direction_of(opt.direction), false);
         if (!pp) {
             err_line("error: a binary file holds one frame: give its protocol (robowire decode buwizz3 --file " + opt.file + ")");
             return exit_usage;
@@ -133,21 +152,22 @@ int run_decode(const decode_options& opt) {
         std::string joined;
         for (const auto& a : opt.hex) joined += (joined.empty() ? "" : " ") + a;
         // a line copied from an nRF Connect log: its value, direction and UUID
-        if (is_log_line(joined)) return decode_lines(pp, "the argument", joined, opt.json, direction_of(opt.direction), false);
+        if (is_log_line(joined))
+            return decode_lines(pp, "the argument", joined, opt.format.get(), direction_of(opt.direction), false);
         std::string error;
         if (!pp) {
-            err_line("error: decode needs a protocol before the bytes: buwizz3, navbot or osp (robowire decode --help)");
+            err_line("error: decode needs a protocol before the bytes: " + protocol_names() + " (robowire decode --help)");
             return exit_usage;
         }
         const auto b = parse_hex_text(joined, error);
         if (!b) {
-            if (opt.json) out_line(render_json_error(error, {}));
+            opt.format.get().print(render_json_error(error, {}), "");
             err_line("error: " + error);
             return exit_bad_input;
         }
         bytes = *b;
     }
-    return report(*pp, pp->decode(bytes, direction_of(opt.direction)), opt.json);
+    return report(*pp, pp->decode(bytes, direction_of(opt.direction)), opt.format.get());
 }
 
 // ---- encode
@@ -173,37 +193,29 @@ int run_encode(const std::string& protocol_name, const std::string& message, con
 
 // ---- scan / monitor: OSP frames in a byte stream
 struct osp_printer {
-    bool json = false;
+    explicit osp_printer(const output_format& f) : out(f) {}
+    const output_format& out;
     robowire::osp::scanner scanner;
     void feed(std::span<const std::uint8_t> chunk) {
         scanner.feed(chunk, [&](robowire::osp::scanner::frame_bytes f) {
             const outcome o = osp_protocol().decode(f, direction::any);
-            if (o.status == exit_ok) {
-                if (json) out_line(render_json("osp", o));
-                else std::fputs(render_text("osp", o).c_str(), stdout);
-            } else if (json) {
-                out_line(render_json_error(o.error, {{"protocol", "osp"}, {"bytes", hex_of(f)}}));
-            } else {
-                out_line("osp frame " + hex_of(f) + ": " + o.error);
-            }
-            std::fflush(stdout);
+            if (o.status == exit_ok) out.print(render_json("osp", o), render_text("osp", o));
+            else out.print(render_json_error(o.error, {{"protocol", "osp"}, {"bytes", hex_of(f)}}),
+                           "osp frame " + hex_of(f) + ": " + o.error + "\n");
         });
     }
     void counters(const char* input) const {
-        if (json) {
-            out_line(render_json_counters({{"frames", scanner.frames()}, {"skipped_bytes", scanner.skipped()},
-                                           {"false_starts", scanner.false_starts()}},
-                                          input ? input : ""));
-            return;
-        }
-        std::printf("frames %llu, skipped bytes %llu, false starts %llu%s%s\n", static_cast<unsigned long long>(scanner.frames()),
-                    static_cast<unsigned long long>(scanner.skipped()), static_cast<unsigned long long>(scanner.false_starts()),
-                    input ? "; input read as " : "", input ? input : "");
+        out.print(render_json_counters({{"frames", scanner.frames()}, {"skipped_bytes", scanner.skipped()},
+                                        {"false_starts", scanner.false_starts()}},
+                                       input ? input : ""),
+                  "frames " + std::to_string(scanner.frames()) + ", skipped bytes " + std::to_string(scanner.skipped()) +
+                      ", false starts " + std::to_string(scanner.false_starts()) +
+                      (input ? std::string("; input read as ") + input : std::string()) + "\n");
     }
 };
 
 // scan buwizz3 / navbot: a BLE log has one frame per line.
-int run_scan_lines(const protocol& proto, const std::string& path, bool json, input_mode mode) {
+int run_scan_lines(const protocol& proto, const std::string& path, const output_format& out, input_mode mode) {
     byte_vector raw;
     if (const int rc = read_all(path, raw)) return rc;
     const std::string name = path == "-" ? "stdin" : path;
@@ -212,13 +224,12 @@ int run_scan_lines(const protocol& proto, const std::string& path, bool json, in
                  name + " is binary");
         return exit_bad_input;
     }
-    return decode_lines(&proto, name, std::string_view(reinterpret_cast<const char*>(raw.data()), raw.size()), json,
+    return decode_lines(&proto, name, std::string_view(reinterpret_cast<const char*>(raw.data()), raw.size()), out,
                         direction::any, true);
 }
 
-int run_scan(const std::string& path, bool json, input_mode mode) {
-    osp_printer p;
-    p.json = json;
+int run_scan(const std::string& path, const output_format& out, input_mode mode) {
+    osp_printer p(out);
     input in;
     if (const int rc = read_input(path, mode, in)) return rc;
     err_line(std::string("scan: reading ") + (path == "-" ? "stdin" : path) + " as " + input_kind(in.hex_text) +
@@ -246,11 +257,10 @@ struct monitor_options {
     long baud = 115200;
     long count = -1;
     double timeout = -1;
-    bool json = false;
+    format_option format;
 };
 int run_monitor(const monitor_options& opt) {
-    osp_printer p;
-    p.json = opt.json;
+    osp_printer p(opt.format.get());
     const int fd = ::open(opt.device.c_str(), O_RDONLY | O_NOCTTY | O_NONBLOCK);
     if (fd < 0) {
         err_line("error: cannot open " + opt.device + ": " + std::strerror(errno));
@@ -297,13 +307,15 @@ int main(int argc, char** argv) {
         "Exit status: 0 ok; 1 bad input (the message names the problem, the byte and the field);\n"
         "2 usage error (unknown command, option, protocol, message or field; bad option value).\n"
         "Run robowire <command> --help for a command's options. Manual: docs/cli.md");
-    const std::vector<std::string> names = {"buwizz3", "navbot", "osp"};
+    std::vector<std::string> names;  // every protocol (tools/protocols.cpp)
+    for (const protocol* p : protocols()) names.emplace_back(p->name);
+    const std::string one_of = protocol_names();  // "buwizz3, navbot or osp"
 
     // list
     std::string list_protocol;
     bool list_fields = false, list_as_json = false;
     auto* list = app.add_subcommand("list", "every message: name, command byte(s), valid lengths; --fields: every field");
-    list->add_option("protocol", list_protocol, "buwizz3, navbot or osp (default: all)")->check(CLI::IsMember(names));
+    list->add_option("protocol", list_protocol, one_of + " (default: all)")->check(CLI::IsMember(names));
     list->add_flag("--fields", list_fields, "each field: name, byte offset, wire type, valid values, unit, flag bits; records expanded");
     list->add_flag("--json", list_as_json, "the tables as one JSON document, every field included (Python: robowire.schema())");
 
@@ -311,10 +323,10 @@ int main(int argc, char** argv) {
     decode_options dec_opt;
     auto* dec = app.add_subcommand("decode", "decode a frame from hex bytes (any spelling), or every frame of a file or log");
     dec->add_option("protocol", dec_opt.protocol,
-                    "buwizz3, navbot or osp (with --file, may be left out: each log line's characteristic UUID picks it)")
+                    one_of + " (with --file, may be left out: each log line's characteristic UUID picks it)")
         ->check(CLI::IsMember(names));
     dec->add_option("hex", dec_opt.hex, "bytes: \"01 6D\", 016D, 0x01,0x6D, 01-6D, 01:6D, (0x) 01-6D");
-    dec->add_flag("--json", dec_opt.json, "one JSON object on stdout");
+    add_format_options(*dec, dec_opt.format, "one JSON object on stdout");
     dec->add_option("--direction", dec_opt.direction,
                     "BuWizz3: command or notification (default: what the command byte and length allow)")
         ->check(CLI::IsMember({"command", "notification"}));
@@ -328,19 +340,20 @@ int main(int argc, char** argv) {
     std::string enc_protocol, enc_message;
     std::vector<std::string> enc_values;
     auto* enc = app.add_subcommand("encode", "build a frame from field values; prints hex");
-    enc->add_option("protocol", enc_protocol, "buwizz3, navbot or osp")->required()->check(CLI::IsMember(names));
+    enc->add_option("protocol", enc_protocol, one_of)->required()->check(CLI::IsMember(names));
     enc->add_option("message", enc_message, "message name (robowire list)")->required();
     enc->add_option("values", enc_values,
                     "name=value: arrays and records as comma lists in the order robowire list --fields shows, enums by name");
 
     // scan
     std::string scan_protocol, scan_path = "-";
-    bool scan_json = false, scan_hex = false, scan_bin = false;
+    format_option scan_format;
+    bool scan_hex = false, scan_bin = false;
     auto* scan = app.add_subcommand("scan", "osp: find and decode frames in a byte stream (binary or hex text); "
                                             "buwizz3, navbot: every frame of a log, one per line, NAVBOT messages reassembled");
     scan->add_option("protocol", scan_protocol, "osp, buwizz3 or navbot")->required()->check(CLI::IsMember(names));
     scan->add_option("file", scan_path, "file to read, - for stdin (default)");
-    scan->add_flag("--json", scan_json, "JSON lines on stdout: messages, errors, counters (each with a \"type\")");
+    add_format_options(*scan, scan_format, "JSON lines on stdout: messages, errors, counters (each with a \"type\")");
     auto* scan_hexf = scan->add_flag("--hex", scan_hex, "the input is hex text");
     auto* scan_binf = scan->add_flag("--binary", scan_bin, "the input is binary");
     scan_hexf->excludes(scan_binf);
@@ -353,7 +366,7 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({9600L, 19200L, 38400L, 57600L, 115200L, 230400L, 460800L, 921600L}));
     mon->add_option("--count", mon_opt.count, "stop after N frames")->check(not_negative);
     mon->add_option("--timeout", mon_opt.timeout, "stop after S seconds")->check(not_negative);
-    mon->add_flag("--json", mon_opt.json, "JSON lines on stdout: messages, errors, counters (each with a \"type\")");
+    add_format_options(*mon, mon_opt.format, "JSON lines on stdout: messages, errors, counters (each with a \"type\")");
 
     add_extra_commands(app);
 
@@ -391,8 +404,8 @@ int main(int argc, char** argv) {
     if (enc->parsed()) return run_encode(enc_protocol, enc_message, enc_values);
     if (scan->parsed()) {
         const auto mode = scan_hex ? input_mode::hex : scan_bin ? input_mode::binary : input_mode::detect;
-        if (scan_protocol != "osp") return run_scan_lines(*find_protocol(scan_protocol), scan_path, scan_json, mode);
-        return run_scan(scan_path, scan_json, mode);
+        if (scan_protocol != "osp") return run_scan_lines(*find_protocol(scan_protocol), scan_path, scan_format.get(), mode);
+        return run_scan(scan_path, scan_format.get(), mode);
     }
     if (mon->parsed()) return run_monitor(mon_opt);
     return exit_ok;  // an extra subcommand ran in its callback

@@ -13,5 +13,12 @@ const protocol* find_protocol(std::string_view name) {
         if (p->name == name) return p;
     return nullptr;
 }
+std::string protocol_names() {
+    std::string out;
+    const auto all = protocols();
+    for (std::size_t i = 0; i < all.size(); ++i)
+        out += std::string(i == 0 ? "" : i + 1 == all.size() ? " or " : ", ") + std::string(all[i]->name);
+    return out;
+}
 
 }  // namespace robowire::cli

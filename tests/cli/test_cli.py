@@ -309,6 +309,18 @@ check([l.get("type") for l in lines] == ["message", "message", "error", "counter
 check([l.get("message") for l in lines[:2]] == ["soc", "voltage"] and lines[2].get("bytes") == "FF AA 03 01 0A 0B 0C 0D 55 77"
       and lines[3].get("frames") == 3 and lines[3].get("input") == "binary", f"scan --json: {lines}")
 check(lines[1].get("fields", {}).get("centivolts_physical") == {"value": 12.34, "unit": "V"}, "scan --json physical value")
+# --format: the same bytes as --json and as the default; the formats' names checked; not with --json
+check(run("scan", "osp", "--format", "json", stdin=stream) == run("scan", "osp", "--json", stdin=stream), "scan --format json")
+check(run("scan", "osp", "--format", "text", stdin=stream) == run("scan", "osp", stdin=stream), "scan --format text")
+for args in (["decode", "osp", "FF AA 02 12 D2 04 00 00 55 77"], ["decode", "osp", "FF AA 03 01 0A 0B 0C 0D 55 77"]):
+    check(run(*args, "--format", "json") == run(*args, "--json"), f"{args} --format json")
+    check(run(*args, "--format", "text") == run(*args), f"{args} --format text")
+check(run("decode", "osp", "FF AA 02 12 D2 04 00 00 55 77", "--format", "json")[1] != run("decode", "osp", "FF AA 02 12 D2 04 00 00 55 77")[1],
+      "--format json differs from text")
+rc, out, err = run("decode", "osp", "FF AA 02 12 D2 04 00 00 55 77", "--format", "yaml")
+check(rc == 2 and "yaml" in err and out == "", f"--format yaml: {rc} {err!r}")
+rc, out, err = run("scan", "osp", "--format", "json", "--json", stdin=stream)
+check(rc == 2 and "excludes" in err, f"--format with --json: {err!r}")
 d = tempfile.mkdtemp()
 text_path = os.path.join(d, "dump.txt")
 with open(text_path, "w") as fh:

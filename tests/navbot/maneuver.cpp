@@ -129,6 +129,40 @@ TEST_CASE("navbot: decode_frame dispatches", "[navbot]") {
           error{errc::invalid_enum, 9});
 }
 
+namespace {
+// A message of another command (0x03), single frame, one byte: what a new
+// NAVBOT message looks like to decode_frame.
+struct lamp {
+    std::uint8_t level = 0;
+    friend constexpr bool operator==(const lamp&, const lamp&) = default;
+};
+constexpr auto table_of(std::type_identity<lamp>) {
+    auto t = make_table<lamp>("lamp",
+                              {{0, header1, errc::bad_header}, {1, header2, errc::bad_header}, {2, 0x03, errc::bad_command},
+                               {3, 0x00, errc::bad_sequence}},
+                              field{"level", &lamp::level, 5, wire::u8{}});
+    t.declared_size = frame_size;
+    return t;
+}
+// The frame first: decode_frame finds the frame alternative by its table (no fixed command byte), not its place.
+using with_lamp = std::variant<frame, lamp, maneuver>;
+}  // namespace
+
+TEST_CASE("navbot: decode_frame is driven by the variant's tables", "[navbot]") {
+    constexpr auto lamp_frame = test::hex("55 AA 03 00 00 2A 00 00 00 00 00 00 00 00 00 00 00 00 00 00");
+    STATIC_REQUIRE(std::get<lamp>(decode_frame<with_lamp>(lamp_frame).value()) == lamp{42});
+    STATIC_REQUIRE(std::get<maneuver>(decode_frame<with_lamp>(all_fields_twos).value()) == all_fields);
+    constexpr auto json = test::hex("55 AA 02 00 00 7B 7D 00 00 00 00 00 00 00 00 00 00 00 00 00");
+    STATIC_REQUIRE(std::get<frame>(decode_frame<with_lamp>(json).value()).command == command::json);
+    // the default variant has no lamp: a 0x03 frame stays a frame
+    STATIC_REQUIRE(std::get<frame>(decode_frame(lamp_frame).value()).command == 0x03);
+    // the alternative's own checks apply: `remaining` must be 0
+    CHECK(decode_frame<with_lamp>(test::hex("55 AA 03 01 00 2A 00 00 00 00 00 00 00 00 00 00 00 00 00 00")).error() ==
+          error{errc::bad_sequence, 3});
+    test::check_each_round_trips<with_lamp>([](const with_lamp& m) { return robowire::encode(m); },
+                                            [](std::span<const std::uint8_t> in) { return decode_frame<with_lamp>(in); });
+}
+
 TEST_CASE("navbot: every message round trips through the variant", "[navbot]") {
     STATIC_REQUIRE(std::variant_size_v<message> >= 2);
     test::check_each_round_trips<message>([](const message& m) { return robowire::encode(m); },
