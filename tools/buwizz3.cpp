@@ -37,8 +37,10 @@ outcome decode(std::span<const std::uint8_t> in, direction d) {
     const auto n = by_command<bw::notification>(in[0], in.size(), note_fits);
     if (d != direction::any) {
         outcome o = decode_as(in, d);
-        if (d == direction::command && !c && n) o.error += " (" + hex2(in[0]) + " is the notification " + n->first + ")";
-        if (d == direction::notification && !n && c) o.error += " (" + hex2(in[0]) + " is the command " + c->first + ")";
+        if (d == direction::command && !c && n)
+            o.error += " (" + hex2(in[0]) + " is the notification " + n->first + ")";
+        if (d == direction::notification && !n && c)
+            o.error += " (" + hex2(in[0]) + " is the command " + c->first + ")";
         return o;
     }
     if (c && !n) return decode_as(in, direction::command);
@@ -50,9 +52,11 @@ outcome decode(std::span<const std::uint8_t> in, direction d) {
     // both directions use this command byte: the length decides
     if (cmd_fits && !note_fits) return decode_as(in, direction::command);
     if (note_fits && !cmd_fits) return decode_as(in, direction::notification);
-    const std::string which = hex2(in[0]) + " is the command " + c->first + " (" + c->second + ") and the notification " +
-                              n->first + " (" + n->second + "); " + plural(in.size(), "byte", "bytes") + " given";
-    if (cmd_fits && note_fits) return failure(exit_usage, which + ": add --direction command or --direction notification");
+    const std::string which = hex2(in[0]) + " is the command " + c->first + " (" + c->second +
+                              ") and the notification " + n->first + " (" + n->second + "); " +
+                              plural(in.size(), "byte", "bytes") + " given";
+    if (cmd_fits && note_fits)
+        return failure(exit_usage, which + ": add --direction command or --direction notification");
     outcome o = decode_as(in, direction::command);
     o.error += " (" + which + ")";
     return o;

@@ -47,23 +47,23 @@ struct node {
     std::int64_t i = 0;
     double d = 0;
     bool b = false;
-    std::string s;                // string leaves: enum names, text, hex bytes
-    std::string text;             // leaves (and byte arrays): the text-output form
-    std::optional<double> phys;   // physical value (fields with a unit)
+    std::string s;               // string leaves: enum names, text, hex bytes
+    std::string text;            // leaves (and byte arrays): the text-output form
+    std::optional<double> phys;  // physical value (fields with a unit)
     std::string unit;
     std::vector<std::pair<std::string, std::string>> bits;  // flag bit name -> "true"/"false" or a value name
-    std::optional<std::string> payload_text;                 // NAVBOT JSON payload as text
+    std::optional<std::string> payload_text;                // NAVBOT JSON payload as text
     std::vector<node> children;
 };
 
 // A decoded message or an error, as the protocol modules return them.
 struct outcome {
-    int status = exit_ok;             // exit_ok, exit_bad_input or exit_usage
-    std::string error;                // one line (without "error: ")
-    std::vector<std::string> hints;   // more lines for stderr (text) / "hints" (JSON)
-    std::string message;              // message name (decoded)
-    node fields;                      // decoded fields (an object)
-    byte_vector bytes;                // encoded frame
+    int status = exit_ok;            // exit_ok, exit_bad_input or exit_usage
+    std::string error;               // one line (without "error: ")
+    std::vector<std::string> hints;  // more lines for stderr (text) / "hints" (JSON)
+    std::string message;             // message name (decoded)
+    node fields;                     // decoded fields (an object)
+    byte_vector bytes;               // encoded frame
 };
 
 // ---- render.cpp
@@ -74,7 +74,8 @@ std::string render_json(std::string_view protocol, const outcome& o);
 // {"type": "error", "error": ..., plus extra string members}.
 std::string render_json_error(std::string_view error, const std::vector<std::pair<std::string, std::string>>& extra);
 // {"type": "counters", name: value..., "input": input (when not empty)}.
-std::string render_json_counters(const std::vector<std::pair<std::string, std::uint64_t>>& counters, std::string_view input);
+std::string render_json_counters(const std::vector<std::pair<std::string, std::uint64_t>>& counters,
+                                 std::string_view input);
 
 // ---- output.cpp: the output formats of decode, scan and monitor (--format, --json).
 // What they print on stdout is a series of records, each given in two forms:
@@ -97,9 +98,9 @@ const output_format* find_output_format(std::string_view name);
 enum class direction { any, command, notification };
 struct protocol {
     std::string_view name;
-    std::string_view summary;                                       // one line for `list`
-    bool has_directions;                                            // BuWizz3: command / notification
-    std::string (*list)(bool fields);                               // `list` output
+    std::string_view summary;          // one line for `list`
+    bool has_directions;               // BuWizz3: command / notification
+    std::string (*list)(bool fields);  // `list` output
     outcome (*decode)(std::span<const std::uint8_t> in, direction d);
     // values: name=value pairs in the order given (names checked, repeats refused here)
     outcome (*encode)(std::string_view message, const std::vector<std::pair<std::string, std::string>>& values);
@@ -108,7 +109,8 @@ struct protocol {
 // its entry, and its declaration, in protocols.cpp: the commands' protocol
 // arguments, their help and the tool's messages come from protocols()).
 const protocol& buwizz3_protocol();
-outcome buwizz3_encode(std::string_view message, const std::vector<std::pair<std::string, std::string>>& values);  // buwizz3_encode.cpp
+outcome buwizz3_encode(std::string_view message,
+                       const std::vector<std::pair<std::string, std::string>>& values);  // buwizz3_encode.cpp
 const protocol& navbot_protocol();
 const protocol& osp_protocol();
 // Every protocol, in `list` order (protocols.cpp); nullptr for an unknown name.
@@ -131,8 +133,8 @@ bool looks_like_text(std::span<const std::uint8_t> data);
 // characteristic UUID of each line picks the protocol). decode: results on
 // stdout, errors and a summary on stderr. scan: errors on stdout too, NAVBOT
 // messages reassembled, counters last. `name` names the input in messages.
-int decode_lines(const protocol* p, std::string_view name, std::string_view text, const output_format& out, direction forced,
-                 bool scan);
+int decode_lines(const protocol* p, std::string_view name, std::string_view text, const output_format& out,
+                 direction forced, bool scan);
 
 // ---- more subcommands
 // Adds `robowire dissector <protocol> [--output DIR]` (dissector_command.cpp).

@@ -50,7 +50,8 @@ template <class V, class Fn>
 void for_each_alternative(Fn&& fn) {
     [&]<std::size_t... I>(std::index_sequence<I...>) {
         (fn(std::type_identity<std::variant_alternative_t<I, V>>{}), ...);
-    }(std::make_index_sequence<std::variant_size_v<V>>{});
+    }
+    (std::make_index_sequence<std::variant_size_v<V>>{});
 }
 
 template <class F>
@@ -108,18 +109,18 @@ std::string flat_names(const std::string& prefix = {}) {
     robowire::for_each_field<M>([&](const auto& f) {
         using F = std::remove_cvref_t<decltype(f)>;
         if (!s.empty()) s += ", ";
-        const std::string name = prefix + std::string(f.name) + (F::is_array ? "[" + std::to_string(F::count) + "]" : "");
+        const std::string name =
+            prefix + std::string(f.name) + (F::is_array ? "[" + std::to_string(F::count) + "]" : "");
         if constexpr (F::kind == wire_kind::record) s += name + " (" + flat_names<element_of_t<F>>() + ")";
         else s += name;
     });
     return s;
 }
 
-
 // ---------------------------------------------------------------- the field at a byte
 struct location {
-    std::string path;   // "pu_motors[1].position"
-    std::string valid;  // "-180..179 (deg)"
+    std::string path;       // "pu_motors[1].position"
+    std::string valid;      // "-180..179 (deg)"
     std::size_t start = 0;  // the element's first byte (relative to the message)
     wire_kind kind = wire_kind::u8;
     bool is_enum = false;
@@ -166,7 +167,8 @@ inline std::string raw_value_text(const location& loc, std::span<const std::uint
     bool is_signed = false;
     switch (loc.kind) {
     case wire_kind::i8: is_signed = true; [[fallthrough]];
-    case wire_kind::u8: case wire_kind::bits: size = 1; break;
+    case wire_kind::u8:
+    case wire_kind::bits: size = 1; break;
     case wire_kind::i16le: is_signed = true; [[fallthrough]];
     case wire_kind::u16le: size = 2; break;
     case wire_kind::i32le: is_signed = true; [[fallthrough]];
@@ -286,8 +288,9 @@ node element_node(const F& f, const E& v) {
                     n.bits.emplace_back(std::string(b.name), value ? "true" : "false");
                     if (value) shown = std::string(b.name);
                 } else {
-                    const std::string vn = value < b.values.size() && !b.values[value].empty() ? std::string(b.values[value])
-                                                                                              : std::to_string(value);
+                    const std::string vn = value < b.values.size() && !b.values[value].empty()
+                                               ? std::string(b.values[value])
+                                               : std::to_string(value);
                     n.bits.emplace_back(std::string(b.name), vn);
                     shown = std::string(b.name) + " " + vn;
                 }
@@ -326,7 +329,8 @@ node tree_of(const M& m) {
                 for (const auto& e : value) arr.children.push_back(element_node<M>(f, e));
                 // long byte arrays without meaning per byte (a payload): one hex line in text output
                 if constexpr (F::kind == wire_kind::u8 && std::is_same_v<E, std::uint8_t> && F::count >= 8) {
-                    if (f.unit.name.empty()) arr.text = hex_of(std::span<const std::uint8_t>(value.data(), value.size()));
+                    if (f.unit.name.empty())
+                        arr.text = hex_of(std::span<const std::uint8_t>(value.data(), value.size()));
                 }
                 return arr;
             } else {
@@ -357,12 +361,14 @@ std::string key_bytes() {
     return s;
 }
 template <class M>
-void list_fields(std::string& out, std::size_t base, std::size_t stride_note_base, const std::string& prefix, std::string_view indent) {
+void list_fields(std::string& out, std::size_t base, std::size_t stride_note_base, const std::string& prefix,
+                 std::string_view indent) {
     robowire::for_each_field<M>([&](const auto& f) {
         using F = std::remove_cvref_t<decltype(f)>;
         std::string type(robowire::to_string(F::kind));
         if constexpr (F::kind == wire_kind::bits) {
-            type += "[" + std::to_string(F::wire_type::lo) + ".." + std::to_string(F::wire_type::lo + F::wire_type::width - 1) + "]";
+            type += "[" + std::to_string(F::wire_type::lo) + ".." +
+                    std::to_string(F::wire_type::lo + F::wire_type::width - 1) + "]";
         }
         if (F::is_enum) type += " enum";
         if (F::is_array) type += " x" + std::to_string(F::count);
@@ -373,14 +379,15 @@ void list_fields(std::string& out, std::size_t base, std::size_t stride_note_bas
         char line[256];
         if constexpr (F::kind == wire_kind::record) {
             using R = element_of_t<F>;
-            const std::string what = F::is_array ? std::to_string(F::count) + " x " + std::to_string(flat_count<R>()) + " = " +
-                                                       plural(flat_count_of<F>(), "value", "values")
+            const std::string what = F::is_array ? std::to_string(F::count) + " x " + std::to_string(flat_count<R>()) +
+                                                       " = " + plural(flat_count_of<F>(), "value", "values")
                                                  : plural(flat_count_of<F>(), "value", "values");
-            std::snprintf(line, sizeof line, "%.*s%-28s %-9s %-22s encode: %s=%s in this order: %s\n", static_cast<int>(indent.size()),
-                          indent.data(), name.c_str(), at.c_str(), type.c_str(), std::string(f.name).c_str(), what.c_str(),
-                          flat_names<R>().c_str());
+            std::snprintf(line, sizeof line, "%.*s%-28s %-9s %-22s encode: %s=%s in this order: %s\n",
+                          static_cast<int>(indent.size()), indent.data(), name.c_str(), at.c_str(), type.c_str(),
+                          std::string(f.name).c_str(), what.c_str(), flat_names<R>().c_str());
             out += line;
-            list_fields<R>(out, base + f.offset, F::is_array ? F::element_size : 0, name + ".", std::string(indent) + "  ");
+            list_fields<R>(out, base + f.offset, F::is_array ? F::element_size : 0, name + ".",
+                           std::string(indent) + "  ");
         } else {
             std::string valid = valid_of(f);
             if constexpr (robowire::has_flag_bits<M>) {
@@ -400,8 +407,8 @@ void list_fields(std::string& out, std::size_t base, std::size_t stride_note_bas
                 }
                 if (!bits.empty()) valid += "; bits: " + bits;
             }
-            std::snprintf(line, sizeof line, "%.*s%-28s %-9s %-22s %s\n", static_cast<int>(indent.size()), indent.data(),
-                          name.c_str(), at.c_str(), type.c_str(), valid.c_str());
+            std::snprintf(line, sizeof line, "%.*s%-28s %-9s %-22s %s\n", static_cast<int>(indent.size()),
+                          indent.data(), name.c_str(), at.c_str(), type.c_str(), valid.c_str());
             out += line;
         }
     });
@@ -410,8 +417,8 @@ template <class M>
 void list_message(std::string& out, bool fields) {
     constexpr auto& t = robowire::table_v<M>;
     char line[160];
-    std::snprintf(line, sizeof line, "  %-26.*s %-8s %s\n", static_cast<int>(t.name.size()), t.name.data(), key_bytes<M>().c_str(),
-                  valid_lengths<M>().c_str());
+    std::snprintf(line, sizeof line, "  %-26.*s %-8s %s\n", static_cast<int>(t.name.size()), t.name.data(),
+                  key_bytes<M>().c_str(), valid_lengths<M>().c_str());
     out += line;
     if (fields) list_fields<M>(out, 0, 0, "", "      ");
 }
@@ -451,7 +458,8 @@ inline std::optional<std::int64_t> parse_integer(const std::string& t) {
     errno = 0;
     char* end = nullptr;
     const unsigned long long u = std::strtoull(t.c_str() + i, &end, base);
-    if (*end || errno || t[i] == '-' || t[i] == '+' || u > static_cast<unsigned long long>(std::numeric_limits<std::int64_t>::max()))
+    if (*end || errno || t[i] == '-' || t[i] == '+' ||
+        u > static_cast<unsigned long long>(std::numeric_limits<std::int64_t>::max()))
         return std::nullopt;
     const auto v = static_cast<std::int64_t>(u);
     return neg ? -v : v;
@@ -467,7 +475,8 @@ bool parse_element(const F& f, E& v, value_reader& r, std::size_t byte, const st
     } else {
         const std::string& t = r.tokens[r.pos++];
         auto bad = [&](std::string_view why) {
-            r.error = std::string(why) + " at byte " + std::to_string(byte) + ": " + path + "=" + t + ", valid " + valid_of(f);
+            r.error = std::string(why) + " at byte " + std::to_string(byte) + ": " + path + "=" + t + ", valid " +
+                      valid_of(f);
             return false;
         };
         if constexpr (std::is_same_v<E, bool>) {
@@ -479,7 +488,8 @@ bool parse_element(const F& f, E& v, value_reader& r, std::size_t byte, const st
                 v = *e;
             } else {
                 const auto n = parse_integer(t);
-                if (!n || *n < 0 || *n > 255 || !robowire::is_valid_enum(static_cast<E>(*n))) return bad("unknown name");
+                if (!n || *n < 0 || *n > 255 || !robowire::is_valid_enum(static_cast<E>(*n)))
+                    return bad("unknown name");
                 v = static_cast<E>(*n);
             }
         } else if constexpr (std::is_same_v<E, float>) {
@@ -512,7 +522,8 @@ template <class F, class T>
 bool fill_field(const F& f, T& value, value_reader& r, std::size_t base, const std::string& path) {
     if constexpr (F::is_array) {
         for (std::size_t k = 0; k < F::count; ++k)
-            if (!parse_element(f, value[k], r, base + f.offset + k * F::element_size, path + "[" + std::to_string(k) + "]"))
+            if (!parse_element(f, value[k], r, base + f.offset + k * F::element_size,
+                               path + "[" + std::to_string(k) + "]"))
                 return false;
         return true;
     } else {
@@ -545,16 +556,18 @@ outcome encode_as(const std::vector<std::pair<std::string, std::string>>& values
         robowire::for_each_field<M>([&](const auto& f) { known = known || f.name == values[i].first; });
         if (!known) {
             std::string names;
-            robowire::for_each_field<M>([&](const auto& f) { names += (names.empty() ? "" : ", ") + std::string(f.name); });
+            robowire::for_each_field<M>(
+                [&](const auto& f) { names += (names.empty() ? "" : ", ") + std::string(f.name); });
             o.status = exit_usage;
-            o.error = "unknown field " + values[i].first + " of " + mname + " (fields: " + (names.empty() ? "none" : names) + ")";
+            o.error = "unknown field " + values[i].first + " of " + mname +
+                      " (fields: " + (names.empty() ? "none" : names) + ")";
             return o;
         }
         for (std::size_t j = 0; j < i; ++j) {
             if (values[j].first == values[i].first) {
                 o.status = exit_usage;
-                o.error = "field " + values[i].first + " given twice (" + values[j].first + "=" + values[j].second + ", " +
-                          values[i].first + "=" + values[i].second + ")";
+                o.error = "field " + values[i].first + " given twice (" + values[j].first + "=" + values[j].second +
+                          ", " + values[i].first + "=" + values[i].second + ")";
                 return o;
             }
         }
@@ -572,13 +585,12 @@ outcome encode_as(const std::vector<std::pair<std::string, std::string>>& values
         constexpr std::size_t want = flat_count_of<F>();
         if (r.tokens.size() != want) {
             o.status = exit_bad_input;
-            o.error = std::string(f.name) + ": " + plural(r.tokens.size(), "value", "values") + " given, " + std::to_string(want) +
-                      " expected";
+            o.error = std::string(f.name) + ": " + plural(r.tokens.size(), "value", "values") + " given, " +
+                      std::to_string(want) + " expected";
             if constexpr (F::kind == wire_kind::record)
                 o.error += " (" + (F::is_array ? std::to_string(F::count) + " x " : std::string()) + "[" +
                            flat_names<element_of_t<F>>() + "])";
-            else if (F::is_array)
-                o.error += " (" + std::string(f.name) + "=v1,...,v" + std::to_string(want) + ")";
+            else if (F::is_array) o.error += " (" + std::string(f.name) + "=v1,...,v" + std::to_string(want) + ")";
             return;
         }
         auto& member = m.*(f.member);
@@ -604,7 +616,8 @@ outcome encode_as(const std::vector<std::pair<std::string, std::string>>& values
 
 // Encodes message `name` if it is one of V's alternatives.
 template <class V>
-std::optional<outcome> encode_in(std::string_view name, const std::vector<std::pair<std::string, std::string>>& values) {
+std::optional<outcome> encode_in(std::string_view name,
+                                 const std::vector<std::pair<std::string, std::string>>& values) {
     std::optional<outcome> o;
     for_each_alternative<V>([&](auto t) {
         using M = typename decltype(t)::type;

@@ -18,7 +18,8 @@ void add_dissector_command(CLI::App& app) {
         std::string dir = ".";
     };
     auto opt = std::make_shared<options>();
-    auto* cmd = app.add_subcommand("dissector", "write Wireshark Lua plugins (DIR/robowire_<protocol>.lua); docs/wireshark.md");
+    auto* cmd =
+        app.add_subcommand("dissector", "write Wireshark Lua plugins (DIR/robowire_<protocol>.lua); docs/wireshark.md");
     cmd->add_option("protocol", opt->protocol, "buwizz3, navbot, osp or all")
         ->required()
         ->check(CLI::IsMember({"buwizz3", "navbot", "osp", "all"}));

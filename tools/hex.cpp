@@ -7,11 +7,21 @@ namespace robowire::cli {
 namespace {
 bool is_separator(char c) {
     switch (c) {
-    case ' ': case '\t': case '\n': case '\r': case '\f': case '\v':
-    case '-': case ':': case ',': case ';': case '{': case '}': case '[': case ']':
-        return true;
-    default:
-        return false;
+    case ' ':
+    case '\t':
+    case '\n':
+    case '\r':
+    case '\f':
+    case '\v':
+    case '-':
+    case ':':
+    case ',':
+    case ';':
+    case '{':
+    case '}':
+    case '[':
+    case ']': return true;
+    default: return false;
     }
 }
 int digit(char c) {
@@ -25,7 +35,8 @@ bool starts_with_0x_marker(std::string_view s) {  // nRF Connect's "(0x)"
 }
 std::string shown(char c) {
     char b[16];
-    if (static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7F) std::snprintf(b, sizeof b, "'%c'", c);
+    if (static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7F)
+        std::snprintf(b, sizeof b, "'%c'", c);
     else std::snprintf(b, sizeof b, "byte 0x%02X", static_cast<unsigned>(static_cast<unsigned char>(c)));
     return b;
 }
@@ -35,8 +46,14 @@ std::optional<byte_vector> parse_hex_text(std::string_view text, std::string& er
     byte_vector out;
     std::size_t i = 0;
     while (i < text.size()) {
-        if (is_separator(text[i])) { ++i; continue; }
-        if (starts_with_0x_marker(text.substr(i))) { i += 4; continue; }
+        if (is_separator(text[i])) {
+            ++i;
+            continue;
+        }
+        if (starts_with_0x_marker(text.substr(i))) {
+            i += 4;
+            continue;
+        }
         const std::size_t start = i;
         std::size_t end = i;
         while (end < text.size() && !is_separator(text[end])) ++end;

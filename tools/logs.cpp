@@ -193,7 +193,8 @@ struct known_uuid {
 std::optional<known_uuid> protocol_of_uuid(const std::string& uuid) {
     const auto u = uuid128::parse(uuid);
     if (!u) return std::nullopt;
-    if (*u == robowire::buwizz3::application_uuid) return known_uuid{&buwizz3_protocol(), "BuWizz3 application characteristic"};
+    if (*u == robowire::buwizz3::application_uuid)
+        return known_uuid{&buwizz3_protocol(), "BuWizz3 application characteristic"};
     if (*u == robowire::navbot::write_uuid) return known_uuid{&navbot_protocol(), "NAVBOT write characteristic"};
     if (*u == robowire::navbot::notify_uuid) return known_uuid{&navbot_protocol(), "NAVBOT notify characteristic"};
     return std::nullopt;
@@ -282,10 +283,11 @@ public:
         if (!p_) {
             for (const auto& [num, pl] : lines) {
                 if (pl.kind == parsed_line::none || !pl.uuid.empty()) continue;
-                const std::string why = "line " + std::to_string(num) + ": which protocol? " +
-                                        (pl.handle.empty() ? std::string("the line names no characteristic")
-                                                           : "the " + source_ + " names attribute handles, not characteristic UUIDs") +
-                                        ": give " + protocol_names() + " (robowire decode buwizz3 --file " + name_ + ")";
+                const std::string why =
+                    "line " + std::to_string(num) + ": which protocol? " +
+                    (pl.handle.empty() ? std::string("the line names no characteristic")
+                                       : "the " + source_ + " names attribute handles, not characteristic UUIDs") +
+                    ": give " + protocol_names() + " (robowire decode buwizz3 --file " + name_ + ")";
                 out_.print(dump({{"type", "error"}, {"line", num}, {"error", why}}), "");
                 err_line("error: " + why);
                 return exit_usage;
@@ -306,10 +308,14 @@ public:
         if (c_.frames == 0 && c_.errors == 0) {
             std::string others;
             for (const auto& u : other_uuids_) others += (others.empty() ? ": " : ", ") + u;
-            const std::string why = "no frame in " + name_ + ": " + std::to_string(n) + (n == 1 ? " line" : " lines") + " (read as " + source_ +
+            const std::string why = "no frame in " + name_ + ": " + std::to_string(n) + (n == 1 ? " line" : " lines") +
+                                    " (read as " + source_ +
                                     (c_.other ? "; " + std::to_string(c_.other) +
-                                                     (c_.other == 1 ? " value of another characteristic" : " values of other characteristics") + others
-                                               : "") + ")";
+                                                    (c_.other == 1 ? " value of another characteristic"
+                                                                   : " values of other characteristics") +
+                                                    others
+                                              : "") +
+                                    ")";
             out_.print(dump({{"type", "error"}, {"error", why}}), "");
             err_line("error: " + why);
             return exit_bad_input;
@@ -339,7 +345,8 @@ private:
             if ((!k && !decode_unknown_) || (k && p_ && k->p != p_)) {
                 ++c_.other;
                 --c_.frames;
-                if (other_uuids_.size() < 3 && std::find(other_uuids_.begin(), other_uuids_.end(), pl.uuid) == other_uuids_.end())
+                if (other_uuids_.size() < 3 &&
+                    std::find(other_uuids_.begin(), other_uuids_.end(), pl.uuid) == other_uuids_.end())
                     other_uuids_.push_back(pl.uuid);
                 return;
             }
@@ -364,7 +371,8 @@ private:
             ++c_.decoded;
             std::string head = "line " + std::to_string(num);
             if (pl.dir != link_direction::unknown) head += " (" + std::string(direction_text(pl.dir)) + ")";
-            out_.print(dump(with_line(json::parse(render_json(p->name, o)), num, pl)), head + ": " + render_text(p->name, o));
+            out_.print(dump(with_line(json::parse(render_json(p->name, o)), num, pl)),
+                       head + ": " + render_text(p->name, o));
         }
         if (scan_ && p == &navbot_protocol() && pl.bytes.size() == robowire::navbot::frame_size) reassemble(num, pl);
     }
@@ -413,13 +421,15 @@ private:
             ++c_.reassembly_errors;
             std::string dropped;
             if (!s.lines.empty())
-                dropped = "; the partial message (line" + std::string(s.lines.size() > 1 ? "s " : " ") + std::to_string(s.lines.front()) +
+                dropped = "; the partial message (line" + std::string(s.lines.size() > 1 ? "s " : " ") +
+                          std::to_string(s.lines.front()) +
                           (s.lines.size() > 1 ? "-" + std::to_string(s.lines.back()) : "") + ") is dropped";
             s.lines.clear();
             if (f->remaining != 0 && r.code() == errc::command_changed) s.lines.push_back(num);
             note = std::string(robowire::to_string(r.code())) + " at byte " + std::to_string(r.error().offset);
             if (r.code() == errc::bad_sequence)
-                note += ": remaining " + std::to_string(f->remaining) + " after " + std::to_string(before) + ", frames were lost";
+                note += ": remaining " + std::to_string(f->remaining) + " after " + std::to_string(before) +
+                        ", frames were lost";
             if (r.code() == errc::command_changed) note += ": a frame of another multi-frame message";
             note += dropped;
             j["outcome"] = "error";
@@ -436,8 +446,14 @@ private:
                 s.lines.assign(1, num);
                 note = reassembly_text(*r);
                 break;
-            case nb::reassembly::duplicate: ++c_.duplicates; note = reassembly_text(*r); break;
-            case nb::reassembly::discarded: ++c_.discarded; note = reassembly_text(*r); break;
+            case nb::reassembly::duplicate:
+                ++c_.duplicates;
+                note = reassembly_text(*r);
+                break;
+            case nb::reassembly::discarded:
+                ++c_.discarded;
+                note = reassembly_text(*r);
+                break;
             case nb::reassembly::single: note = reassembly_text(*r); break;
             case nb::reassembly::complete: {
                 s.lines.push_back(num);
@@ -449,8 +465,9 @@ private:
                 const auto text = s.r.text();
                 const bool is_json = s.r.json().has_value();
                 note = std::string(reassembly_text(*r)) + ", " + std::to_string(s.lines.size()) + " frames (lines " +
-                       std::to_string(s.lines.front()) + "-" + std::to_string(num) + "), command 0x" + hex_of(std::span(&f->command, 1)) +
-                       ", " + std::to_string(text.size()) + " bytes" + (is_json ? " of JSON" : "") + ": " + std::string(text);
+                       std::to_string(s.lines.front()) + "-" + std::to_string(num) + "), command 0x" +
+                       hex_of(std::span(&f->command, 1)) + ", " + std::to_string(text.size()) + " bytes" +
+                       (is_json ? " of JSON" : "") + ": " + std::string(text);
                 j["command"] = f->command;
                 j["lines"] = s.lines;
                 j["text"] = std::string(text);
@@ -464,12 +481,18 @@ private:
     }
 
     void summary() {
-        std::vector<std::pair<std::string, std::uint64_t>> cs = {
-            {"lines", c_.lines}, {"frames", c_.frames}, {"decoded", c_.decoded}, {"errors", c_.errors},
-            {"lines_without_frame", c_.no_frame}, {"other_characteristics", c_.other}};
+        std::vector<std::pair<std::string, std::uint64_t>> cs = {{"lines", c_.lines},
+                                                                 {"frames", c_.frames},
+                                                                 {"decoded", c_.decoded},
+                                                                 {"errors", c_.errors},
+                                                                 {"lines_without_frame", c_.no_frame},
+                                                                 {"other_characteristics", c_.other}};
         if (scan_ && p_ == &navbot_protocol()) {
-            cs.insert(cs.end(), {{"messages_reassembled", c_.messages}, {"duplicates", c_.duplicates}, {"restarted", c_.restarts},
-                                 {"discarded", c_.discarded}, {"reassembly_errors", c_.reassembly_errors}});
+            cs.insert(cs.end(), {{"messages_reassembled", c_.messages},
+                                 {"duplicates", c_.duplicates},
+                                 {"restarted", c_.restarts},
+                                 {"discarded", c_.discarded},
+                                 {"reassembly_errors", c_.reassembly_errors}});
         }
         std::string text;
         for (const auto& [k, v] : cs) {
@@ -512,8 +535,8 @@ bool looks_like_text(std::span<const std::uint8_t> data) {
     return !data.empty();
 }
 
-int decode_lines(const protocol* p, std::string_view name, std::string_view text, const output_format& out, direction forced,
-                 bool scan) {
+int decode_lines(const protocol* p, std::string_view name, std::string_view text, const output_format& out,
+                 direction forced, bool scan) {
     runner r(p, name, forced, out, scan);
     return r.run(text);
 }

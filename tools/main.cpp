@@ -23,8 +23,10 @@ namespace {
 
 // Accepts a value that does not start with '-' (the option's type then checks it is a number).
 const CLI::Validator not_negative(
-    [](std::string& v) { return !v.empty() && v[0] == '-' ? std::string("must not be negative: ") + v : std::string(); }, "NOT NEGATIVE",
-    "not_negative");
+    [](std::string& v) {
+        return !v.empty() && v[0] == '-' ? std::string("must not be negative: ") + v : std::string();
+    },
+    "NOT NEGATIVE", "not_negative");
 
 void out_line(const std::string& s) {
     std::fwrite(s.data(), 1, s.size(), stdout);
@@ -48,7 +50,9 @@ int report(const protocol& p, const outcome& o, const output_format& out) {
 struct format_option {
     std::string name;
     bool json = false;
-    const output_format& get() const { return *find_output_format(json ? "json" : name.empty() ? output_formats()[0].name : name); }
+    const output_format& get() const {
+        return *find_output_format(json ? "json" : name.empty() ? output_formats()[0].name : name);
+    }
 };
 // Adds --format and --json to `sub`; `what`: --json's help.
 void add_format_options(CLI::App& sub, format_option& f, const std::string& what) {
@@ -56,8 +60,8 @@ void add_format_options(CLI::App& sub, format_option& f, const std::string& what
     std::vector<std::string> names;
     for (const output_format& o : output_formats()) {
         names.emplace_back(o.name);
-        help += std::string(names.size() == 1 ? " " : "; ") + std::string(o.name) + (names.size() == 1 ? " (default)" : "") + ", " +
-                std::string(o.help);
+        help += std::string(names.size() == 1 ? " " : "; ") + std::string(o.name) +
+                (names.size() == 1 ? " (default)" : "") + ", " + std::string(o.help);
     }
     auto* format = sub.add_option("--format", f.name, help)->check(CLI::IsMember(names));
     sub.add_flag("--json", f.json, what)->excludes(format);
@@ -135,10 +139,12 @@ int run_decode(const decode_options& opt) {
             return decode_lines(pp, name, std::string_view(reinterpret_cast<const char*>(raw.data()), raw.size()),
                                 opt.format.get(), direction_of(opt.direction), false);
         if (!pp) {
-            err_line("error: a binary file holds one frame: give its protocol (robowire decode buwizz3 --file " + opt.file + ")");
+            err_line("error: a binary file holds one frame: give its protocol (robowire decode buwizz3 --file " +
+                     opt.file + ")");
             return exit_usage;
         }
-        err_line("read " + name + " as binary (" + std::to_string(raw.size()) + (raw.size() == 1 ? " byte)" : " bytes)"));
+        err_line("read " + name + " as binary (" + std::to_string(raw.size()) +
+                 (raw.size() == 1 ? " byte)" : " bytes)"));
         bytes = std::move(raw);
     } else {
         if (!pp && opt.hex.empty()) {
@@ -156,7 +162,8 @@ int run_decode(const decode_options& opt) {
             return decode_lines(pp, "the argument", joined, opt.format.get(), direction_of(opt.direction), false);
         std::string error;
         if (!pp) {
-            err_line("error: decode needs a protocol before the bytes: " + protocol_names() + " (robowire decode --help)");
+            err_line("error: decode needs a protocol before the bytes: " + protocol_names() +
+                     " (robowire decode --help)");
             return exit_usage;
         }
         const auto b = parse_hex_text(joined, error);
@@ -171,7 +178,8 @@ int run_decode(const decode_options& opt) {
 }
 
 // ---- encode
-int run_encode(const std::string& protocol_name, const std::string& message, const std::vector<std::string>& assignments) {
+int run_encode(const std::string& protocol_name, const std::string& message,
+               const std::vector<std::string>& assignments) {
     const protocol& p = *find_protocol(protocol_name);
     std::vector<std::pair<std::string, std::string>> values;
     for (const auto& a : assignments) {
@@ -200,16 +208,18 @@ struct osp_printer {
         scanner.feed(chunk, [&](robowire::osp::scanner::frame_bytes f) {
             const outcome o = osp_protocol().decode(f, direction::any);
             if (o.status == exit_ok) out.print(render_json("osp", o), render_text("osp", o));
-            else out.print(render_json_error(o.error, {{"protocol", "osp"}, {"bytes", hex_of(f)}}),
-                           "osp frame " + hex_of(f) + ": " + o.error + "\n");
+            else
+                out.print(render_json_error(o.error, {{"protocol", "osp"}, {"bytes", hex_of(f)}}),
+                          "osp frame " + hex_of(f) + ": " + o.error + "\n");
         });
     }
     void counters(const char* input) const {
-        out.print(render_json_counters({{"frames", scanner.frames()}, {"skipped_bytes", scanner.skipped()},
+        out.print(render_json_counters({{"frames", scanner.frames()},
+                                        {"skipped_bytes", scanner.skipped()},
                                         {"false_starts", scanner.false_starts()}},
                                        input ? input : ""),
-                  "frames " + std::to_string(scanner.frames()) + ", skipped bytes " + std::to_string(scanner.skipped()) +
-                      ", false starts " + std::to_string(scanner.false_starts()) +
+                  "frames " + std::to_string(scanner.frames()) + ", skipped bytes " +
+                      std::to_string(scanner.skipped()) + ", false starts " + std::to_string(scanner.false_starts()) +
                       (input ? std::string("; input read as ") + input : std::string()) + "\n");
     }
 };
@@ -220,8 +230,8 @@ int run_scan_lines(const protocol& proto, const std::string& path, const output_
     if (const int rc = read_all(path, raw)) return rc;
     const std::string name = path == "-" ? "stdin" : path;
     if (mode == input_mode::binary || (mode == input_mode::detect && !looks_like_text(raw))) {
-        err_line("error: scan " + std::string(proto.name) + " reads text, one frame per line (hex, or an nRF Connect log); " +
-                 name + " is binary");
+        err_line("error: scan " + std::string(proto.name) +
+                 " reads text, one frame per line (hex, or an nRF Connect log); " + name + " is binary");
         return exit_bad_input;
     }
     return decode_lines(&proto, name, std::string_view(reinterpret_cast<const char*>(raw.data()), raw.size()), out,
@@ -274,7 +284,8 @@ int run_monitor(const monitor_options& opt) {
         tio.c_cflag |= CLOCAL | CREAD;
         tcsetattr(fd, TCSANOW, &tio);
     } else {
-        err_line("monitor: " + opt.device + " is not a serial port (" + std::strerror(errno) + "); reading it as it is");
+        err_line("monitor: " + opt.device + " is not a serial port (" + std::strerror(errno) +
+                 "); reading it as it is");
     }
     const auto start = std::chrono::steady_clock::now();
     std::uint8_t buf[1024];
@@ -314,14 +325,18 @@ int main(int argc, char** argv) {
     // list
     std::string list_protocol;
     bool list_fields = false, list_as_json = false;
-    auto* list = app.add_subcommand("list", "every message: name, command byte(s), valid lengths; --fields: every field");
+    auto* list =
+        app.add_subcommand("list", "every message: name, command byte(s), valid lengths; --fields: every field");
     list->add_option("protocol", list_protocol, one_of + " (default: all)")->check(CLI::IsMember(names));
-    list->add_flag("--fields", list_fields, "each field: name, byte offset, wire type, valid values, unit, flag bits; records expanded");
-    list->add_flag("--json", list_as_json, "the tables as one JSON document, every field included (Python: robowire.schema())");
+    list->add_flag("--fields", list_fields,
+                   "each field: name, byte offset, wire type, valid values, unit, flag bits; records expanded");
+    list->add_flag("--json", list_as_json,
+                   "the tables as one JSON document, every field included (Python: robowire.schema())");
 
     // decode
     decode_options dec_opt;
-    auto* dec = app.add_subcommand("decode", "decode a frame from hex bytes (any spelling), or every frame of a file or log");
+    auto* dec =
+        app.add_subcommand("decode", "decode a frame from hex bytes (any spelling), or every frame of a file or log");
     dec->add_option("protocol", dec_opt.protocol,
                     one_of + " (with --file, may be left out: each log line's characteristic UUID picks it)")
         ->check(CLI::IsMember(names));
@@ -330,8 +345,9 @@ int main(int argc, char** argv) {
     dec->add_option("--direction", dec_opt.direction,
                     "BuWizz3: command or notification (default: what the command byte and length allow)")
         ->check(CLI::IsMember({"command", "notification"}));
-    dec->add_option("--file", dec_opt.file,
-                    "read frames from a file (- for stdin): text line by line (hex, nRF Connect logs), or one binary frame");
+    dec->add_option(
+        "--file", dec_opt.file,
+        "read frames from a file (- for stdin): text line by line (hex, nRF Connect logs), or one binary frame");
     auto* dec_hex = dec->add_flag("--hex", dec_opt.hex_file, "the file is hex text");
     auto* dec_bin = dec->add_flag("--binary", dec_opt.binary_file, "the file is binary");
     dec_hex->excludes(dec_bin);
@@ -342,15 +358,17 @@ int main(int argc, char** argv) {
     auto* enc = app.add_subcommand("encode", "build a frame from field values; prints hex");
     enc->add_option("protocol", enc_protocol, one_of)->required()->check(CLI::IsMember(names));
     enc->add_option("message", enc_message, "message name (robowire list)")->required();
-    enc->add_option("values", enc_values,
-                    "name=value: arrays and records as comma lists in the order robowire list --fields shows, enums by name");
+    enc->add_option(
+        "values", enc_values,
+        "name=value: arrays and records as comma lists in the order robowire list --fields shows, enums by name");
 
     // scan
     std::string scan_protocol, scan_path = "-";
     format_option scan_format;
     bool scan_hex = false, scan_bin = false;
-    auto* scan = app.add_subcommand("scan", "osp: find and decode frames in a byte stream (binary or hex text); "
-                                            "buwizz3, navbot: every frame of a log, one per line, NAVBOT messages reassembled");
+    auto* scan = app.add_subcommand("scan",
+                                    "osp: find and decode frames in a byte stream (binary or hex text); "
+                                    "buwizz3, navbot: every frame of a log, one per line, NAVBOT messages reassembled");
     scan->add_option("protocol", scan_protocol, "osp, buwizz3 or navbot")->required()->check(CLI::IsMember(names));
     scan->add_option("file", scan_path, "file to read, - for stdin (default)");
     add_format_options(*scan, scan_format, "JSON lines on stdout: messages, errors, counters (each with a \"type\")");
@@ -404,7 +422,8 @@ int main(int argc, char** argv) {
     if (enc->parsed()) return run_encode(enc_protocol, enc_message, enc_values);
     if (scan->parsed()) {
         const auto mode = scan_hex ? input_mode::hex : scan_bin ? input_mode::binary : input_mode::detect;
-        if (scan_protocol != "osp") return run_scan_lines(*find_protocol(scan_protocol), scan_path, scan_format.get(), mode);
+        if (scan_protocol != "osp")
+            return run_scan_lines(*find_protocol(scan_protocol), scan_path, scan_format.get(), mode);
         return run_scan(scan_path, scan_format.get(), mode);
     }
     if (mon->parsed()) return run_monitor(mon_opt);

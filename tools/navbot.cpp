@@ -5,12 +5,12 @@ namespace robowire::cli {
 namespace {
 namespace nb = robowire::navbot;
 
-
 outcome decode(std::span<const std::uint8_t> in, direction) {
     const auto r = nb::decode_frame(in);
     if (!r) {
         outcome o = failure(exit_bad_input, describe_decode_error<nb::message>(in, r.error()));
-        if (r.code() == errc::too_long || r.code() == errc::too_short) o.error += " (" + std::string(nb::length_error_text(in.size())) + ")";
+        if (r.code() == errc::too_long || r.code() == errc::too_short)
+            o.error += " (" + std::string(nb::length_error_text(in.size())) + ")";
         o.hints = sign_magnitude_notes(in);
         return o;
     }

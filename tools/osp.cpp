@@ -23,7 +23,8 @@ std::string message_of(std::span<const std::uint8_t> in) {
     return name.empty() ? where + " (no such message)" : name + " (" + where + ")";
 }
 
-// "bad header byte at byte 1: 0xAB, expected 0xAA (frames are FF AA DEV CMD P1..P4 55 77); message status (DEV 02 CMD 14)"
+// "bad header byte at byte 1: 0xAB, expected 0xAA (frames are FF AA DEV CMD P1..P4 55 77); message status (DEV 02 CMD
+// 14)"
 std::string marker_error(std::span<const std::uint8_t> in, const robowire::error& e) {
     std::string s = std::string(robowire::to_string(e.code)) + " at byte " + std::to_string(e.offset);
     for (const auto& b : robowire::table_v<osp::frame>.fixed) {
@@ -37,7 +38,8 @@ std::string marker_error(std::span<const std::uint8_t> in, const robowire::error
 outcome decode(std::span<const std::uint8_t> in, direction) {
     const auto r = osp::decode(in);
     if (r) return outcome_of(*r);
-    if (r.code() == errc::bad_header || r.code() == errc::bad_trailer) return failure(exit_bad_input, marker_error(in, r.error()));
+    if (r.code() == errc::bad_header || r.code() == errc::bad_trailer)
+        return failure(exit_bad_input, marker_error(in, r.error()));
     outcome o = failure(exit_bad_input, describe_decode_error<osp::message>(in, r.error()));
     if (const auto& f = r.frame()) {
         o.error += " (DEV " + hex_of(std::span<const std::uint8_t>(&f->device, 1)) + " CMD " +

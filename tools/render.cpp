@@ -12,7 +12,8 @@ using json = nlohmann::ordered_json;
 
 std::string dump(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace); }
 
-// The key of a field's physical value: "battery_voltage_raw" -> "battery_voltage", "centivolts" -> "centivolts_physical".
+// The key of a field's physical value: "battery_voltage_raw" -> "battery_voltage", "centivolts" ->
+// "centivolts_physical".
 std::string physical_key(const std::string& key) {
     constexpr std::string_view raw = "_raw";
     if (key.size() > raw.size() && key.compare(key.size() - raw.size(), raw.size(), raw) == 0)
@@ -73,14 +74,12 @@ void rows_of(const node& n, const std::string& path, std::vector<std::pair<std::
         if (!n.text.empty()) {
             out.emplace_back(path, n.text);
         } else {
-            for (std::size_t i = 0; i < n.children.size(); ++i) rows_of(n.children[i], path + "[" + std::to_string(i) + "]", out);
+            for (std::size_t i = 0; i < n.children.size(); ++i)
+                rows_of(n.children[i], path + "[" + std::to_string(i) + "]", out);
         }
         break;
-    case node::null:
-        out.emplace_back(path, "(absent)");
-        break;
-    default:
-        out.emplace_back(path, n.text);
+    case node::null: out.emplace_back(path, "(absent)"); break;
+    default: out.emplace_back(path, n.text);
     }
     if (n.payload_text) out.emplace_back(path + " (text)", *n.payload_text);
 }
@@ -112,7 +111,8 @@ std::string render_json_error(std::string_view error, const std::vector<std::pai
     return dump(j);
 }
 
-std::string render_json_counters(const std::vector<std::pair<std::string, std::uint64_t>>& counters, std::string_view input) {
+std::string render_json_counters(const std::vector<std::pair<std::string, std::uint64_t>>& counters,
+                                 std::string_view input) {
     json j = {{"type", "counters"}};
     for (const auto& [k, v] : counters) j[k] = v;
     if (!input.empty()) j["input"] = input;

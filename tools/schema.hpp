@@ -94,15 +94,10 @@ json fields_of();
 template <class M, class F>
 json field_of(const F& f) {
     using E = element_t<F>;
-    json j = {{"name", f.name},
-              {"offset", f.offset},
-              {"type", to_string(F::kind)},
-              {"value", value_kind<F>()},
-              {"count", F::count},
-              {"array", F::is_array},
-              {"optional", F::is_optional},
-              {"element_size", F::element_size},
-              {"size", F::size}};
+    json j = {
+        {"name", f.name},    {"offset", f.offset},   {"type", to_string(F::kind)}, {"value", value_kind<F>()},
+        {"count", F::count}, {"array", F::is_array}, {"optional", F::is_optional}, {"element_size", F::element_size},
+        {"size", F::size}};
     if constexpr (F::kind == wire_kind::bits) j["bits"] = {{"lo", F::wire_type::lo}, {"width", F::wire_type::width}};
     const bool ranged = value_kind<F>() == "int";
     j["valid"] = ranged ? json{{"min", f.valid.min}, {"max", f.valid.max}} : json(nullptr);
@@ -165,7 +160,8 @@ template <class V>
 void add_messages(json& messages, std::string_view direction = {}) {
     [&]<std::size_t... I>(std::index_sequence<I...>) {
         (messages.push_back(message_of<std::variant_alternative_t<I, V>>(direction)), ...);
-    }(std::make_index_sequence<std::variant_size_v<V>>{});
+    }
+    (std::make_index_sequence<std::variant_size_v<V>>{});
 }
 
 // One protocol's entry, around its messages (add_messages).

@@ -50,8 +50,10 @@ inline std::vector<std::string> sign_magnitude_notes(std::span<const std::uint8_
             const int twos = static_cast<int>(static_cast<std::int8_t>(b));
             const int sm = -static_cast<int>(b & 0x7F);
             notes.push_back(std::string(f.name) + " at byte " + std::to_string(f.offset) + " is " + hex2(b) + " = " +
-                            std::to_string(twos) + " (two's complement, what the robot reads); in the sign-magnitude "
-                            "spelling of the protocol document's samples " + hex2(b) + " = " + std::to_string(sm));
+                            std::to_string(twos) +
+                            " (two's complement, what the robot reads); in the sign-magnitude "
+                            "spelling of the protocol document's samples " +
+                            hex2(b) + " = " + std::to_string(sm));
         }
     });
     return notes;

@@ -53,7 +53,7 @@ public:
     constexpr bool boolean() noexcept { return (byte() & 1) != 0; }
     // sizeof(T) bytes, the first the least significant.
     template <class T>
-        requires std::is_integral_v<T>
+    requires std::is_integral_v<T>
     constexpr T integral() noexcept {
         std::uint64_t u = 0;
         for (std::size_t i = 0; i < sizeof(T); ++i) u |= std::uint64_t{byte()} << (8 * i);
@@ -63,7 +63,7 @@ public:
     // up to 256 values), the first the least significant, taken modulo the
     // number of values and added to lo. All zeros: lo.
     template <class T>
-        requires std::is_integral_v<T>
+    requires std::is_integral_v<T>
     constexpr T integral_in_range(T lo, T hi) noexcept {
         if (hi < lo) return lo;
         const std::uint64_t width = static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo);
@@ -74,8 +74,8 @@ public:
     }
     // The bytes not read yet, which count as read from now on.
     constexpr std::span<const std::uint8_t> rest() noexcept {
-        const std::span<const std::uint8_t> r = pos_ < size_ ? std::span<const std::uint8_t>(data_ + pos_, size_ - pos_)
-                                                             : std::span<const std::uint8_t>();
+        const std::span<const std::uint8_t> r =
+            pos_ < size_ ? std::span<const std::uint8_t>(data_ + pos_, size_ - pos_) : std::span<const std::uint8_t>();
         pos_ = size_;
         return r;
     }
@@ -154,7 +154,8 @@ template <class E, class F>
 constexpr std::optional<std::int64_t> invalid_code(std::int64_t from) noexcept {
     const range w = wire_limits<F>();
     const std::int64_t lo = max_of(w.min, std::int64_t{std::numeric_limits<std::underlying_type_t<E>>::min()});
-    const std::int64_t hi = min_of(w.max, static_cast<std::int64_t>(std::numeric_limits<std::underlying_type_t<E>>::max()));
+    const std::int64_t hi =
+        min_of(w.max, static_cast<std::int64_t>(std::numeric_limits<std::underlying_type_t<E>>::max()));
     const std::int64_t span = hi - lo + 1;
     for (std::int64_t k = 0; k < span && k < 512; ++k) {
         const std::int64_t c = lo + ((from - lo) % span + span + k) % span;
@@ -219,8 +220,7 @@ template <class F, class V>
 constexpr void make_value(const F& f, V& v, source& s, std::uint8_t bad) noexcept {
     if constexpr (F::is_array)
         for (auto& e : v) make_element(f, e, s, bad);
-    else
-        make_element(f, v, s, bad);
+    else make_element(f, v, s, bad);
 }
 
 template <class M>
@@ -348,7 +348,8 @@ constexpr bool decode_any(std::span<const std::uint8_t> in, Variant& out) noexce
             return true;
         };
         return (one(std::integral_constant<std::size_t, I>{}) || ...);
-    }(std::make_index_sequence<std::variant_size_v<Variant>>{});
+    }
+    (std::make_index_sequence<std::variant_size_v<Variant>>{});
 }
 
 // Calls fn(field, element, offset) for every scalar, enum, bool, float,
@@ -366,8 +367,7 @@ constexpr void each_leaf(M& m, std::size_t base, Fn& fn) noexcept {
         const auto value = [&](auto& v) {
             if constexpr (F::is_array)
                 for (std::size_t k = 0; k < F::count; ++k) one(v[k], base + f.offset + k * F::element_size);
-            else
-                one(v, base + f.offset);
+            else one(v, base + f.offset);
         };
         if constexpr (F::is_optional) {
             if (member) value(*member);
@@ -389,7 +389,8 @@ constexpr void store_raw(std::uint8_t* out, std::size_t size, std::size_t offset
     using E = typename F::element_type;
     using W = typename F::wire_type;
     if (offset + F::element_size > size) return;
-    if constexpr (std::is_enum_v<E>) robowire::detail::store_scalar<W>(enum_code<E>(value), std::span(out, size), offset);
+    if constexpr (std::is_enum_v<E>)
+        robowire::detail::store_scalar<W>(enum_code<E>(value), std::span(out, size), offset);
     else robowire::detail::store_scalar<W>(static_cast<E>(value), std::span(out, size), offset);
 }
 
@@ -406,9 +407,17 @@ constexpr void mutate_element(const F& f, E& v, std::size_t offset, rng& r, raw_
     } else if constexpr (std::is_same_v<E, bool>) {
         v = !v;
     } else if constexpr (std::is_same_v<E, float>) {
-        constexpr float specials[] = {0.0f, -0.0f, 1.0f, -1.0f, 0.5f, 100.0f, std::numeric_limits<float>::infinity(),
-                                      -std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN(),
-                                      std::numeric_limits<float>::max(), std::numeric_limits<float>::denorm_min()};
+        constexpr float specials[] = {0.0f,
+                                      -0.0f,
+                                      1.0f,
+                                      -1.0f,
+                                      0.5f,
+                                      100.0f,
+                                      std::numeric_limits<float>::infinity(),
+                                      -std::numeric_limits<float>::infinity(),
+                                      std::numeric_limits<float>::quiet_NaN(),
+                                      std::numeric_limits<float>::max(),
+                                      std::numeric_limits<float>::denorm_min()};
         const auto u = std::bit_cast<std::uint32_t>(v);
         switch (r.below(4)) {
         case 0: v = std::bit_cast<float>(u + 1); break;  // the next float (by bit pattern)
@@ -465,7 +474,7 @@ inline constexpr std::size_t optional_count_v = [] {
 // made from random bytes), or one element.
 template <class Variant, class M>
 constexpr void mutate_message(M& m, rng& r, raw_write& raw) noexcept {
-    if constexpr (optional_count_v<M> > 0) {
+    if constexpr (optional_count_v < M >> 0) {
         if (r.below(4) == 0) {
             const std::size_t keep = r.below(optional_count_v<M> + 1);  // the first `keep` blocks present
             std::size_t k = 0;
@@ -517,7 +526,7 @@ constexpr std::size_t mutate_bytes(std::uint8_t* data, std::size_t size, std::si
     }
     const std::size_t at = r.below(size);
     if (kind == 1) data[at] = static_cast<std::uint8_t>(data[at] ^ (1 + r.below(255)));  // another byte
-    else data[at] = static_cast<std::uint8_t>(data[at] ^ (1u << r.below(8)));         // one bit flipped
+    else data[at] = static_cast<std::uint8_t>(data[at] ^ (1u << r.below(8)));            // one bit flipped
     return size;
 }
 
@@ -537,7 +546,8 @@ constexpr std::size_t repair(std::uint8_t* data, std::size_t size, std::size_t m
             if (s > best_score) best = i, best_score = s;
         };
         (score(std::integral_constant<std::size_t, I>{}), ...);
-    }(std::make_index_sequence<n>{});
+    }
+    (std::make_index_sequence<n>{});
     if (r.below(8) == 0) best = r.below(n);
     std::size_t out = 0;
     [&]<std::size_t... I>(std::index_sequence<I...>) {
@@ -562,7 +572,8 @@ constexpr std::size_t repair(std::uint8_t* data, std::size_t size, std::size_t m
             if (changed) out = len;
         };
         (fix(std::integral_constant<std::size_t, I>{}), ...);
-    }(std::make_index_sequence<n>{});
+    }
+    (std::make_index_sequence<n>{});
     return out;
 }
 }  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE
@@ -593,9 +604,9 @@ inline namespace ROBOWIRE_MODE_NAMESPACE {
 // straight away, so that the campaign keeps byte-level variety. The result
 // differs from the input except when the fallback leaves it as it was.
 template <class Variant>
-    requires detail::is_variant<Variant>::value
-constexpr std::size_t mutate(std::uint8_t* data, std::size_t size, std::size_t max_size, unsigned int seed,
-                             byte_mutator fallback = nullptr) noexcept {
+requires detail::is_variant<Variant>::value constexpr std::size_t mutate(std::uint8_t* data, std::size_t size,
+                                                                         std::size_t max_size, unsigned int seed,
+                                                                         byte_mutator fallback = nullptr) noexcept {
     detail::rng r{seed};
     if (fallback != nullptr && r.below(8) == 0) return fallback(data, size, max_size);
     Variant held{};
@@ -622,6 +633,6 @@ constexpr std::size_t mutate(std::uint8_t* data, std::size_t size, std::size_t m
     }
     return detail::mutate_bytes(data, size, max_size, r, fallback);
 }
-}  // inline namespace ROBOWIRE_MODE_NAMESPACE
+}  // namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire::fuzz

@@ -103,15 +103,21 @@ struct blink {
     friend constexpr bool operator==(const blink&, const blink&) = default;
 };
 struct set_led_status {
-    std::optional<std::array<rgb, 4>> colors{};  // ports 1-4
+    std::optional<std::array<rgb, 4>> colors{};            // ports 1-4
     std::optional<std::array<buwizz3::blink, 4>> blink{};  // needs colors
     friend constexpr bool operator==(const set_led_status&, const set_led_status&) = default;
 };
 
 // 0x37: accelerometer low-pass filter. Default hz_50.
 enum class lpf_setting : std::uint8_t {
-    hz_0_781 = 0b1000, hz_1_563 = 0b1001, hz_3_125 = 0b1010, hz_6_25 = 0b1011,
-    hz_12_5 = 0b0000, hz_25 = 0b0001, hz_50 = 0b0010, hz_100 = 0b0011,
+    hz_0_781 = 0b1000,
+    hz_1_563 = 0b1001,
+    hz_3_125 = 0b1010,
+    hz_6_25 = 0b1011,
+    hz_12_5 = 0b0000,
+    hz_25 = 0b0001,
+    hz_50 = 0b0010,
+    hz_100 = 0b0011,
 };
 struct set_accel_lpf {
     lpf_setting setting = lpf_setting::hz_50;
@@ -171,10 +177,10 @@ struct set_pid_parameters {
     float ki = 0;
     float kd = 0;
     float lim_i = 0;
-    float reference_rate_limit = 0;  // reference change per 10 ms step
-    std::int8_t lim_out = 127;             // 1..127
-    std::int8_t deadband_out = 0;          // 0..127
-    std::int8_t deadband_out_boost = 0;    // 0..127
+    float reference_rate_limit = 0;                      // reference change per 10 ms step
+    std::int8_t lim_out = 127;                           // 1..127
+    std::int8_t deadband_out = 0;                        // 0..127
+    std::int8_t deadband_out_boost = 0;                  // 0..127
     port_function mode = port_function::pu_speed_servo;  // must equal the port's function
     friend constexpr bool operator==(const set_pid_parameters&, const set_pid_parameters&) = default;
 };
@@ -197,14 +203,21 @@ struct charger_settings {
 // ---- enum tables ----
 constexpr auto enum_table_of(std::type_identity<lpf_setting>) {
     using E = lpf_setting;
-    return std::array<enum_entry<E>, 8>{{{E::hz_0_781, "hz_0_781"}, {E::hz_1_563, "hz_1_563"}, {E::hz_3_125, "hz_3_125"},
-                                         {E::hz_6_25, "hz_6_25"}, {E::hz_12_5, "hz_12_5"}, {E::hz_25, "hz_25"},
-                                         {E::hz_50, "hz_50"}, {E::hz_100, "hz_100"}}};
+    return std::array<enum_entry<E>, 8>{{{E::hz_0_781, "hz_0_781"},
+                                         {E::hz_1_563, "hz_1_563"},
+                                         {E::hz_3_125, "hz_3_125"},
+                                         {E::hz_6_25, "hz_6_25"},
+                                         {E::hz_12_5, "hz_12_5"},
+                                         {E::hz_25, "hz_25"},
+                                         {E::hz_50, "hz_50"},
+                                         {E::hz_100, "hz_100"}}};
 }
 constexpr auto enum_table_of(std::type_identity<port_function>) {
     using E = port_function;
-    return std::array<enum_entry<E>, 5>{{{E::generic_pwm, "generic_pwm"}, {E::pu_simple_pwm, "pu_simple_pwm"},
-                                         {E::pu_speed_servo, "pu_speed_servo"}, {E::pu_position_servo, "pu_position_servo"},
+    return std::array<enum_entry<E>, 5>{{{E::generic_pwm, "generic_pwm"},
+                                         {E::pu_simple_pwm, "pu_simple_pwm"},
+                                         {E::pu_speed_servo, "pu_speed_servo"},
+                                         {E::pu_position_servo, "pu_position_servo"},
                                          {E::pu_absolute_position_servo, "pu_absolute_position_servo"}}};
 }
 
@@ -221,9 +234,10 @@ constexpr auto table_of(std::type_identity<set_device_name>) {
 }
 constexpr auto table_of(std::type_identity<set_motion_wakeup>) {
     using M = set_motion_wakeup;
-    return make_table<M>("set_motion_wakeup", {impl::cmd(0x21)}, field{"enabled", &M::enabled, 1, wire::u8{}},
-                         field{"idle_timeout_s", &M::idle_timeout_s, 2, wire::u32le{}, range{10, 0xFFFFFFFF}, unit{"s"}},
-                         field{"shallow_sleep_timeout_s", &M::shallow_sleep_timeout_s, 6, wire::u32le{}, unit{"s"}});
+    return make_table<M>(
+        "set_motion_wakeup", {impl::cmd(0x21)}, field{"enabled", &M::enabled, 1, wire::u8{}},
+        field{"idle_timeout_s", &M::idle_timeout_s, 2, wire::u32le{}, range{10, 0xFFFFFFFF}, unit{"s"}},
+        field{"shallow_sleep_timeout_s", &M::shallow_sleep_timeout_s, 6, wire::u32le{}, unit{"s"}});
 }
 constexpr auto table_of(std::type_identity<set_accel_calibration>) {
     using M = set_accel_calibration;
@@ -305,7 +319,8 @@ constexpr auto table_of(std::type_identity<set_pu_port_function>) {
 }
 constexpr auto table_of(std::type_identity<enable_pid_reporting>) {
     using M = enable_pid_reporting;
-    return make_table<M>("enable_pid_reporting", {impl::cmd(0x51)}, field{"port", &M::port, 1, wire::u8{}, range{0, 4}});
+    return make_table<M>("enable_pid_reporting", {impl::cmd(0x51)},
+                         field{"port", &M::port, 1, wire::u8{}, range{0, 4}});
 }
 constexpr auto table_of(std::type_identity<set_servo_reference>) {
     using M = set_servo_reference;
@@ -313,17 +328,16 @@ constexpr auto table_of(std::type_identity<set_servo_reference>) {
 }
 constexpr auto table_of(std::type_identity<set_pid_parameters>) {
     using M = set_pid_parameters;
-    return make_table<M>(
-        "set_pid_parameters", {impl::cmd(0x53)}, field{"port", &M::port, 1, wire::u8{}, range{0, 3}},
-        field{"out_lp", &M::out_lp, 2, wire::f32le{}}, field{"d_lp", &M::d_lp, 6, wire::f32le{}},
-        field{"speed_lp", &M::speed_lp, 10, wire::f32le{}}, field{"kp", &M::kp, 14, wire::f32le{}},
-        field{"ki", &M::ki, 18, wire::f32le{}}, field{"kd", &M::kd, 22, wire::f32le{}},
-        field{"lim_i", &M::lim_i, 26, wire::f32le{}},
-        field{"reference_rate_limit", &M::reference_rate_limit, 30, wire::f32le{}},
-        field{"lim_out", &M::lim_out, 34, wire::i8{}, range{1, 127}},
-        field{"deadband_out", &M::deadband_out, 35, wire::i8{}, range{0, 127}},
-        field{"deadband_out_boost", &M::deadband_out_boost, 36, wire::i8{}, range{0, 127}},
-        field{"mode", &M::mode, 37, wire::u8{}});
+    return make_table<M>("set_pid_parameters", {impl::cmd(0x53)}, field{"port", &M::port, 1, wire::u8{}, range{0, 3}},
+                         field{"out_lp", &M::out_lp, 2, wire::f32le{}}, field{"d_lp", &M::d_lp, 6, wire::f32le{}},
+                         field{"speed_lp", &M::speed_lp, 10, wire::f32le{}}, field{"kp", &M::kp, 14, wire::f32le{}},
+                         field{"ki", &M::ki, 18, wire::f32le{}}, field{"kd", &M::kd, 22, wire::f32le{}},
+                         field{"lim_i", &M::lim_i, 26, wire::f32le{}},
+                         field{"reference_rate_limit", &M::reference_rate_limit, 30, wire::f32le{}},
+                         field{"lim_out", &M::lim_out, 34, wire::i8{}, range{1, 127}},
+                         field{"deadband_out", &M::deadband_out, 35, wire::i8{}, range{0, 127}},
+                         field{"deadband_out_boost", &M::deadband_out_boost, 36, wire::i8{}, range{0, 127}},
+                         field{"mode", &M::mode, 37, wire::u8{}});
 }
 constexpr auto table_of(std::type_identity<activate_shelf_mode>) {
     return make_table<activate_shelf_mode>("activate_shelf_mode", {impl::cmd(0xA1)});

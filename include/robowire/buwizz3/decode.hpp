@@ -27,6 +27,6 @@ template <class Notification = notification>
 [[nodiscard]] constexpr result<Notification> decode_notification(std::span<const std::uint8_t> in) noexcept {
     return decode_variant<Notification, 0>(in);
 }
-}  // inline namespace ROBOWIRE_MODE_NAMESPACE
+}  // namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire::buwizz3

@@ -20,12 +20,12 @@ namespace robowire::buwizz3 {
 
 // Status flag bits (status::flags).
 namespace status_flag {
-inline constexpr std::uint8_t error = 1u << 0;            // over-current or over-temperature
-inline constexpr std::uint8_t motion_wakeup = 1u << 1;    // motion wake-up enabled
-inline constexpr std::uint8_t long_range_phy = 1u << 2;   // BLE long-range (coded) PHY in use
+inline constexpr std::uint8_t error = 1u << 0;               // over-current or over-temperature
+inline constexpr std::uint8_t motion_wakeup = 1u << 1;       // motion wake-up enabled
+inline constexpr std::uint8_t long_range_phy = 1u << 2;      // BLE long-range (coded) PHY in use
 inline constexpr std::uint8_t battery_level_mask = 3u << 3;  // bits 3-4: battery_level
-inline constexpr std::uint8_t charging = 1u << 5;         // battery is charging
-inline constexpr std::uint8_t usb_connected = 1u << 6;    // USB cable connected
+inline constexpr std::uint8_t charging = 1u << 5;            // battery is charging
+inline constexpr std::uint8_t usb_connected = 1u << 6;       // USB cable connected
 }  // namespace status_flag
 
 enum class battery_level : std::uint8_t { empty = 0, low = 1, medium = 2, full = 3 };  // empty: motors disabled
@@ -40,7 +40,7 @@ struct bootloader_response {
 // One PoweredUp motor port. Positions are signed (the document says unsigned;
 // the vendor's apps read them signed).
 struct pu_motor {
-    std::uint8_t type = 0;               // PoweredUp motor type id
+    std::uint8_t type = 0;  // PoweredUp motor type id
     std::int8_t velocity = 0;
     std::int16_t absolute_position = 0;  // degrees, -180..179
     std::int32_t position = 0;           // degrees, relative, may be negative
@@ -57,16 +57,16 @@ struct pid_state {
 };
 
 struct status {
-    std::uint8_t flags = 0;                              // status_flag bits
-    std::uint8_t battery_voltage_raw = 0;                // 9 V + raw x 0.05 V
-    std::array<std::uint8_t, 6> motor_current_raw{};    // raw x 0.015 A, ports 1-6
-    std::uint8_t temperature_c = 0;                      // microcontroller, degrees C
-    std::array<std::int16_t, 3> accel_raw{};            // x, y, z: 12-bit left-aligned, 0.488 mg per word unit
+    std::uint8_t flags = 0;                           // status_flag bits
+    std::uint8_t battery_voltage_raw = 0;             // 9 V + raw x 0.05 V
+    std::array<std::uint8_t, 6> motor_current_raw{};  // raw x 0.015 A, ports 1-6
+    std::uint8_t temperature_c = 0;                   // microcontroller, degrees C
+    std::array<std::int16_t, 3> accel_raw{};          // x, y, z: 12-bit left-aligned, 0.488 mg per word unit
     buwizz3::bootloader_response bootloader_response{};
-    std::uint8_t charge_current_ma = 0;                  // battery charge current, mA
-    std::array<pu_motor, 4> pu_motors{};                // ports 1-4
-    std::optional<buwizz3::pid_state> pid_state{};       // present in the 68-byte form
-    std::size_t ignored_trailing_bytes = 0;              // decode: bytes after the known fields (not encoded)
+    std::uint8_t charge_current_ma = 0;             // battery charge current, mA
+    std::array<pu_motor, 4> pu_motors{};            // ports 1-4
+    std::optional<buwizz3::pid_state> pid_state{};  // present in the 68-byte form
+    std::size_t ignored_trailing_bytes = 0;         // decode: bytes after the known fields (not encoded)
 
     constexpr bool error() const noexcept { return flags & status_flag::error; }
     constexpr bool motion_wakeup_enabled() const noexcept { return flags & status_flag::motion_wakeup; }
@@ -104,15 +104,15 @@ constexpr auto table_of(std::type_identity<pid_state>) {
 // in ignored_trailing_bytes. 55-67 bytes is a truncated PID block: bad_length.
 constexpr auto table_of(std::type_identity<status>) {
     using M = status;
-    auto t = make_table<M>(
-        "status", {{0, 0x01, errc::bad_command}}, field{"flags", &M::flags, 1, wire::u8{}},
-        field{"battery_voltage_raw", &M::battery_voltage_raw, 2, wire::u8{}, unit{"V", 0.05, 9.0}},
-        field{"motor_current_raw", &M::motor_current_raw, 3, wire::u8{}, unit{"A", 0.015}},
-        field{"temperature_c", &M::temperature_c, 9, wire::u8{}, unit{"degC"}},
-        field{"accel_raw", &M::accel_raw, 10, wire::i16le{}, unit{"mg", 0.488}},
-        field{"bootloader_response", &M::bootloader_response, 16, wire::record{}},
-        field{"charge_current_ma", &M::charge_current_ma, 21, wire::u8{}, unit{"mA"}},
-        field{"pu_motors", &M::pu_motors, 22, wire::record{}}, field{"pid_state", &M::pid_state, 54, wire::record{}});
+    auto t = make_table<M>("status", {{0, 0x01, errc::bad_command}}, field{"flags", &M::flags, 1, wire::u8{}},
+                           field{"battery_voltage_raw", &M::battery_voltage_raw, 2, wire::u8{}, unit{"V", 0.05, 9.0}},
+                           field{"motor_current_raw", &M::motor_current_raw, 3, wire::u8{}, unit{"A", 0.015}},
+                           field{"temperature_c", &M::temperature_c, 9, wire::u8{}, unit{"degC"}},
+                           field{"accel_raw", &M::accel_raw, 10, wire::i16le{}, unit{"mg", 0.488}},
+                           field{"bootloader_response", &M::bootloader_response, 16, wire::record{}},
+                           field{"charge_current_ma", &M::charge_current_ma, 21, wire::u8{}, unit{"mA"}},
+                           field{"pu_motors", &M::pu_motors, 22, wire::record{}},
+                           field{"pid_state", &M::pid_state, 54, wire::record{}});
     t.declared_max_input = 129;
     t.members_not_on_wire = 1;  // ignored_trailing_bytes
     return t;

@@ -49,7 +49,7 @@ constexpr result<std::int8_t> power_from_percent(double percent) noexcept {
 }
 // The same for whole percentages, in integers (no floating point is linked).
 template <class Int>
-    requires std::is_integral_v<Int>
+requires std::is_integral_v<Int>
 constexpr result<std::int8_t> power_from_percent(Int percent) noexcept {
     if (std::cmp_less(percent, -100) || std::cmp_greater(percent, 100)) return fail(errc::value_out_of_range, 1);
     const int p = static_cast<int>(percent);
@@ -131,7 +131,9 @@ constexpr std::int16_t accel_milli_g_rounded(std::int16_t word) noexcept {
     const std::int32_t ug = accel_micro_g(word);
     return static_cast<std::int16_t>((ug < 0 ? ug - 500 : ug + 500) / 1000);
 }
-constexpr std::uint16_t battery_millivolts(const status& s) noexcept { return battery_millivolts(s.battery_voltage_raw); }
+constexpr std::uint16_t battery_millivolts(const status& s) noexcept {
+    return battery_millivolts(s.battery_voltage_raw);
+}
 // port_index: 0..5 (ports 1-6).
 constexpr std::uint16_t motor_milliamps(const status& s, std::size_t port_index) noexcept {
     return motor_milliamps(s.motor_current_raw[port_index]);

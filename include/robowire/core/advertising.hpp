@@ -38,9 +38,15 @@ public:
 
     // The next structure, or nullopt at the end or at a malformed length.
     constexpr std::optional<structure> next() noexcept {
-        if (done_ || pos_ >= adv_.size()) { done_ = true; return std::nullopt; }
+        if (done_ || pos_ >= adv_.size()) {
+            done_ = true;
+            return std::nullopt;
+        }
         const std::size_t len = adv_[pos_];
-        if (len == 0) { done_ = true; return std::nullopt; }
+        if (len == 0) {
+            done_ = true;
+            return std::nullopt;
+        }
         if (len > adv_.size() - pos_ - 1) {
             done_ = true;
             error_ = fail(errc::bad_length, pos_);
@@ -61,7 +67,10 @@ public:
         constexpr explicit iterator(reader* r) noexcept : r_(r) { ++*this; }
         constexpr const structure& operator*() const noexcept { return *cur_; }
         constexpr const structure* operator->() const noexcept { return &*cur_; }
-        constexpr iterator& operator++() noexcept { cur_ = r_->next(); return *this; }
+        constexpr iterator& operator++() noexcept {
+            cur_ = r_->next();
+            return *this;
+        }
         constexpr void operator++(int) noexcept { ++*this; }
         constexpr bool operator==(std::default_sentinel_t) const noexcept { return !cur_.has_value(); }
 
@@ -82,7 +91,7 @@ private:
 
 // Data of the first structure of `type`, if any (walk stops at malformed data).
 [[nodiscard]] constexpr std::optional<std::span<const std::uint8_t>> find(std::span<const std::uint8_t> adv,
-                                                                         std::uint8_t type) noexcept {
+                                                                          std::uint8_t type) noexcept {
     reader r(adv);
     while (auto s = r.next())
         if (s->type == type) return s->data;

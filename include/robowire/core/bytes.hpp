@@ -9,9 +9,9 @@
 #include <cstdint>
 #include <cstring>
 #include <initializer_list>
-#include <type_traits>
 #include <span>
 #include <string_view>
+#include <type_traits>
 
 #include "result.hpp"
 
@@ -138,7 +138,9 @@ private:
 };
 
 template <std::size_t N>
-constexpr void codec::set_written_size(bytes<N>& b, std::size_t n) noexcept { b.size_ = n; }
+constexpr void codec::set_written_size(bytes<N>& b, std::size_t n) noexcept {
+    b.size_ = n;
+}
 
 // Equal when sizes and used bytes are equal (capacities may differ).
 template <std::size_t N, std::size_t M>
@@ -187,12 +189,19 @@ template <std::size_t N>
     std::size_t i = 0;
     while (i < text.size()) {
         const char c = text[i];
-        if (c == ' ' || c == ',' || c == '-' || c == ':' || c == '\t' || c == '\n' || c == '\r') { ++i; continue; }
-        if (c == '0' && i + 1 < text.size() && (text[i + 1] == 'x' || text[i + 1] == 'X')) { i += 2; continue; }
+        if (c == ' ' || c == ',' || c == '-' || c == ':' || c == '\t' || c == '\n' || c == '\r') {
+            ++i;
+            continue;
+        }
+        if (c == '0' && i + 1 < text.size() && (text[i + 1] == 'x' || text[i + 1] == 'X')) {
+            i += 2;
+            continue;
+        }
         const int hi = nibble(c);
         if (hi < 0) return fail(errc::value_out_of_range, i);
         if (i + 1 >= text.size() || nibble(text[i + 1]) < 0) return fail(errc::bad_length, i);
-        if (!out.push_back(static_cast<std::uint8_t>(hi * 16 + nibble(text[i + 1])))) return fail(errc::capacity_exceeded, i);
+        if (!out.push_back(static_cast<std::uint8_t>(hi * 16 + nibble(text[i + 1]))))
+            return fail(errc::capacity_exceeded, i);
         i += 2;
     }
     return out;

@@ -121,7 +121,8 @@
 // and define that function once, at global scope; it must not return:
 //   void on_bad_access(robowire::error e) noexcept { log(e); reset(); }
 #if defined(ROBOWIRE_BAD_RESULT_ACCESS_HANDLER) && !defined(__cpp_exceptions)
-namespace robowire { struct error; }
+namespace robowire {
+struct error;
+}
 void ROBOWIRE_BAD_RESULT_ACCESS_HANDLER(robowire::error) noexcept;
 #endif
-

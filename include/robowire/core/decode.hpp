@@ -106,6 +106,6 @@ template <described M>
     if (const error e = decode_into(codec::unchecked_value(r), in); e.code != errc::ok) r = e;
     return r;
 }
-}  // inline namespace ROBOWIRE_MODE_NAMESPACE
+}  // namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire

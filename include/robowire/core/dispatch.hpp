@@ -69,13 +69,15 @@ inline constexpr auto key_index_v = [] {
     static_assert(count < 255, "decode_variant: too many alternatives");
     const auto keys = []<std::size_t... I>(std::index_sequence<I...>) {
         return std::array<int, count>{codec::key_of<std::variant_alternative_t<I, Variant>>(KeyOffset)...};
-    }(std::make_index_sequence<count>{});
+    }
+    (std::make_index_sequence<count>{});
     std::array<std::uint8_t, 256> index{};
     index.fill(static_cast<std::uint8_t>(count));
     for (std::size_t i = 0; i < count; ++i) {
         if (keys[i] < 0) continue;
         auto& slot = index[static_cast<std::size_t>(keys[i])];
-        if (slot != count) variant_alternatives_share_a_key(table_v<std::variant_alternative_t<0, Variant>>.name, keys[i]);
+        if (slot != count)
+            variant_alternatives_share_a_key(table_v<std::variant_alternative_t<0, Variant>>.name, keys[i]);
         slot = static_cast<std::uint8_t>(i);
     }
     return index;
@@ -114,13 +116,15 @@ constexpr std::size_t index_of_key(std::uint8_t key) noexcept {
 // Makes alternative I in r (see decode_variant_at) and returns it.
 template <std::size_t I, class Variant>
 ROBOWIRE_ALWAYS_INLINE constexpr auto& make_alternative(result<Variant>& r) noexcept {
-    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) return codec::emplace_alternative<I>(codec::unchecked_value(r));  // holds a value
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE)
+        return codec::emplace_alternative<I>(codec::unchecked_value(r));   // holds a value
     else return *std::get_if<I>(&build_value(r, std::in_place_index<I>));  // r holds an error
 }
 // Makes alternative I of r's variant and decodes `in` into it, in place.
 // Checked: fixed bytes and length checked already (see check_alternative).
 template <std::size_t I, std::size_t KeyOffset, bool Checked, class Variant>
-ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r, std::span<const std::uint8_t> in) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r,
+                                                         std::span<const std::uint8_t> in) noexcept {
     auto& m = make_alternative<I>(r);
     error e{};
     if constexpr (Checked) e = decode_body(m, in);
@@ -128,7 +132,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r, std
     if (e.code != errc::ok) r = e;
 }
 template <std::size_t KeyOffset, bool Checked, class Variant, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr void decode_index(result<Variant>& r, std::size_t index, std::span<const std::uint8_t> in,
+ROBOWIRE_ALWAYS_INLINE constexpr void decode_index(result<Variant>& r, std::size_t index,
+                                                   std::span<const std::uint8_t> in,
                                                    std::index_sequence<I...>) noexcept {
     (void)((index == I ? (decode_alternative<I, KeyOffset, Checked>(r, in), true) : false) || ...);
 }
@@ -162,7 +167,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr error check_alternative(std::size_t index, std:
     if (in.size() > size[1]) return codec::fail_at(errc::too_long, size[1]);
     return e;
 }
-}  // inline namespace ROBOWIRE_MODE_NAMESPACE
+}  // namespace ROBOWIRE_MODE_NAMESPACE
 }  // namespace detail
 
 namespace detail::inline ROBOWIRE_MODE_NAMESPACE {
@@ -212,14 +217,17 @@ inline namespace ROBOWIRE_MODE_NAMESPACE {
 // none does, too_short if the input does not reach the key. The message is
 // decoded in place, without copies.
 template <class Variant, std::size_t KeyOffset = 0>
-[[nodiscard]] ROBOWIRE_ALWAYS_INLINE constexpr result<Variant> decode_variant(std::span<const std::uint8_t> in) noexcept {
+[[nodiscard]] ROBOWIRE_ALWAYS_INLINE constexpr result<Variant> decode_variant(
+    std::span<const std::uint8_t> in) noexcept {
     return detail::decode_variant_at<Variant, KeyOffset>(in.data(), in.size());
 }
-}  // inline namespace ROBOWIRE_MODE_NAMESPACE
+}  // namespace ROBOWIRE_MODE_NAMESPACE
 
 namespace detail {
-template <class Variant> struct max_size_of;
-template <class... M> struct max_size_of<std::variant<M...>> {
+template <class Variant>
+struct max_size_of;
+template <class... M>
+struct max_size_of<std::variant<M...>> {
     static constexpr std::size_t value = [] {
         std::size_t n = 0;
         ((n = max_size_v<M> > n ? max_size_v<M> : n), ...);
@@ -248,7 +256,8 @@ inline namespace ROBOWIRE_MODE_NAMESPACE {
 // needs. Errors: the message's; unknown_message (offset 0) for a variant left
 // valueless by an exception.
 template <class... M>
-[[nodiscard]] constexpr result<bytes<variant_max_size_v<std::variant<M...>>>> encode(const std::variant<M...>& v) noexcept {
+[[nodiscard]] constexpr result<bytes<variant_max_size_v<std::variant<M...>>>> encode(
+    const std::variant<M...>& v) noexcept {
     using out_t = bytes<variant_max_size_v<std::variant<M...>>>;
     result<out_t> r = detail::in_place_result<out_t>();
     auto& b = codec::unchecked_value(r);  // each message is encoded straight into it
@@ -258,6 +267,6 @@ template <class... M>
     else codec::set_written_size(b, n);
     return r;
 }
-}  // inline namespace ROBOWIRE_MODE_NAMESPACE
+}  // namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire

@@ -50,7 +50,8 @@ constexpr error encode_into(const M& m, std::uint8_t* out_data, std::size_t out_
     clear_bytes<M>(dst);
     write_fixed<M>(dst, std::make_index_sequence<fixed_count_v<M>>{});
     if constexpr (sizeof(M) > 16 && !ROBOWIRE_OPTIMIZE_SIZE) {
-        const M copy = m;  // a local cannot alias `out`: its loads need not wait behind byte stores, so wide fields merge
+        const M copy =
+            m;  // a local cannot alias `out`: its loads need not wait behind byte stores, so wide fields merge
         store_record<M>(copy, dst, 0, fields);
     } else {
         store_record<M>(m, dst, 0, fields);  // a few bytes: copied as they are
@@ -81,13 +82,10 @@ template <described M>
     result<out_t> r{std::in_place, init{}};
     auto& b = codec::unchecked_value(r);
     std::size_t n = 0;
-    if (const error e = detail::encode_into(m, b.data(), max_size_v<M>, n); e.code != errc::ok)
-        r = e;
-    else
-        codec::set_written_size(b, n);
+    if (const error e = detail::encode_into(m, b.data(), max_size_v<M>, n); e.code != errc::ok) r = e;
+    else codec::set_written_size(b, n);
     return r;
 }
-}  // inline namespace ROBOWIRE_MODE_NAMESPACE
+}  // namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire
-

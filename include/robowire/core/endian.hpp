@@ -21,10 +21,20 @@ inline constexpr bool is_wire_scalar_v =
     std::is_same_v<T, std::int16_t> || std::is_same_v<T, std::uint32_t> || std::is_same_v<T, std::int32_t> ||
     std::is_same_v<T, float>;
 
-template <std::size_t N> struct uint_of_size;
-template <> struct uint_of_size<1> { using type = std::uint8_t; };
-template <> struct uint_of_size<2> { using type = std::uint16_t; };
-template <> struct uint_of_size<4> { using type = std::uint32_t; };
+template <std::size_t N>
+struct uint_of_size;
+template <>
+struct uint_of_size<1> {
+    using type = std::uint8_t;
+};
+template <>
+struct uint_of_size<2> {
+    using type = std::uint16_t;
+};
+template <>
+struct uint_of_size<4> {
+    using type = std::uint32_t;
+};
 
 // At run time: memcpy (one wide load or store where the core allows
 // unaligned access), except 16-bit values on cores without unaligned access

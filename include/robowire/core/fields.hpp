@@ -20,14 +20,14 @@ namespace robowire {
 
 // What a message's table says about one of its fields.
 struct field_info {
-    std::string_view message{};  // the table's name, e.g. "maneuver"
-    std::string_view name{};     // the field's name, e.g. "pitch"; empty: no field there
-    std::size_t offset = 0;      // first byte of the field in the encoding
-    std::size_t size = 0;        // bytes it occupies (all elements of an array)
-    range valid{0, 0};           // valid raw values, inclusive (scalars; enums: see is_enum)
-    bool is_enum = false;        // valid values are the enumeration's codes, not a range
-    std::string_view unit{};     // physical unit of the field ("" if none)
-    bool raw_is_physical = true; // raw values (valid) are in `unit` (scale 1, offset 0)
+    std::string_view message{};   // the table's name, e.g. "maneuver"
+    std::string_view name{};      // the field's name, e.g. "pitch"; empty: no field there
+    std::size_t offset = 0;       // first byte of the field in the encoding
+    std::size_t size = 0;         // bytes it occupies (all elements of an array)
+    range valid{0, 0};            // valid raw values, inclusive (scalars; enums: see is_enum)
+    bool is_enum = false;         // valid values are the enumeration's codes, not a range
+    std::string_view unit{};      // physical unit of the field ("" if none)
+    bool raw_is_physical = true;  // raw values (valid) are in `unit` (scale 1, offset 0)
     constexpr explicit operator bool() const noexcept { return !name.empty(); }
 };
 
@@ -57,8 +57,10 @@ template <described M>
 }
 
 namespace detail {
-template <class P> struct member_pointer_traits;
-template <class M, class T> struct member_pointer_traits<T M::*> {
+template <class P>
+struct member_pointer_traits;
+template <class M, class T>
+struct member_pointer_traits<T M::*> {
     using message = M;
     using member = T;
 };
@@ -89,13 +91,14 @@ template <auto Member>
 //
 // Scalar and enum members only (not arrays, text or optional blocks).
 template <auto Member, class M, class V>
-    requires std::is_integral_v<V> && (!std::is_same_v<V, bool>)
-[[nodiscard]] constexpr error set_field(M& m, V value) noexcept {
+requires std::is_integral_v<V> &&(!std::is_same_v<V, bool>) [[nodiscard]] constexpr error
+    set_field(M& m, V value) noexcept {
     using traits = detail::member_pointer_traits<decltype(Member)>;
     using T = typename traits::member;
     static_assert(std::is_same_v<typename traits::message, M>, "set_field: the member belongs to another message");
-    static_assert(std::is_integral_v<T> || std::is_enum_v<T>,
-                  "set_field: scalar or enum members only (an array element: check field_of<&M::member>().valid and assign it)");
+    static_assert(
+        std::is_integral_v<T> || std::is_enum_v<T>,
+        "set_field: scalar or enum members only (an array element: check field_of<&M::member>().valid and assign it)");
     error out{errc::unknown_message, 0};  // member not in the table (cannot happen for a described member)
     if constexpr (std::is_integral_v<T> || std::is_enum_v<T>) {  // else only the assertion above is reported
         bool found = false;
@@ -151,7 +154,10 @@ inline constexpr auto length_runs_v = [] {
         });
         if (!ok) continue;
         if (out.count > 0 && out.run[out.count - 1][1] + 1 == len) out.run[out.count - 1][1] = len;
-        else { out.run[out.count][0] = out.run[out.count][1] = len; ++out.count; }
+        else {
+            out.run[out.count][0] = out.run[out.count][1] = len;
+            ++out.count;
+        }
     }
     return out;
 }();
@@ -176,7 +182,10 @@ constexpr std::string_view describe_error(const error& e, std::span<char> buf) n
         std::uint64_t u = v < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
         char digits[20] = {};
         std::size_t d = 0;
-        do { digits[d++] = static_cast<char>('0' + u % 10); u /= 10; } while (u != 0);
+        do {
+            digits[d++] = static_cast<char>('0' + u % 10);
+            u /= 10;
+        } while (u != 0);
         while (d > 0) put({&digits[--d], 1});
     };
     const bool length = e.code == errc::too_short || e.code == errc::too_long;  // about the input, not a field

@@ -27,7 +27,9 @@ struct flag_bit {
 
 // Does M name the bits of any of its flag bytes?
 template <class M>
-concept has_flag_bits = requires { flag_bits_of(std::type_identity<M>{}); };
+concept has_flag_bits = requires {
+    flag_bits_of(std::type_identity<M>{});
+};
 
 // M's flag bit names (an array of flag_bit).
 template <has_flag_bits M>
@@ -35,8 +37,12 @@ inline constexpr auto flag_bits_v = flag_bits_of(std::type_identity<M>{});
 
 // Port bits 0-5 named port1..port6 (BuWizz3 brake and LUT-disable bytes).
 constexpr std::array<flag_bit, 6> port_bits(std::string_view field) noexcept {
-    return {{{field, 0, 1, "port1", {}}, {field, 1, 1, "port2", {}}, {field, 2, 1, "port3", {}},
-             {field, 3, 1, "port4", {}}, {field, 4, 1, "port5", {}}, {field, 5, 1, "port6", {}}}};
+    return {{{field, 0, 1, "port1", {}},
+             {field, 1, 1, "port2", {}},
+             {field, 2, 1, "port3", {}},
+             {field, 3, 1, "port4", {}},
+             {field, 4, 1, "port5", {}},
+             {field, 5, 1, "port6", {}}}};
 }
 
 // Joins arrays of flag_bit (for messages with several flag bytes).

@@ -109,7 +109,10 @@ public:
             char digits[5] = {};
             std::size_t d = 0;
             std::size_t v = e.offset;
-            do { digits[d++] = static_cast<char>('0' + v % 10); v /= 10; } while (v != 0 && d < sizeof digits);
+            do {
+                digits[d++] = static_cast<char>('0' + v % 10);
+                v /= 10;
+            } while (v != 0 && d < sizeof digits);
             while (d > 0) put({&digits[--d], 1});
         }
         what_[n] = '\0';
@@ -195,7 +198,8 @@ constexpr void compile_time_bad_access(errc code) noexcept {
 inline void run_time_only() noexcept {}
 }  // namespace detail
 
-template <class T> class result;
+template <class T>
+class result;
 namespace detail {
 // Tag of result's value-initialising constructor.
 struct value_init_t {
@@ -247,8 +251,7 @@ public:
     constexpr result& operator=(robowire::error e) noexcept {
         if (std::is_constant_evaluated())
             *this = result(e);  // a whole-object copy switches the active member in a constant expression
-        else
-            ::new (static_cast<void*>(&error_)) robowire::error(e);  // makes the error the active member
+        else ::new (static_cast<void*>(&error_)) robowire::error(e);  // makes the error the active member
         ok_ = false;
         return *this;
     }
@@ -258,10 +261,19 @@ public:
 
     // The value. On an error: bad_result_access (exceptions enabled), else
     // ROBOWIRE_BAD_RESULT_ACCESS_HANDLER and a trap; in a constant expression, a compile error.
-    constexpr T& value() & noexcept(detail::access_noexcept) { check(true); return value_.v; }
-    constexpr const T& value() const& noexcept(detail::access_noexcept) { check(true); return value_.v; }
+    constexpr T& value() & noexcept(detail::access_noexcept) {
+        check(true);
+        return value_.v;
+    }
+    constexpr const T& value() const& noexcept(detail::access_noexcept) {
+        check(true);
+        return value_.v;
+    }
     // From a temporary: the value itself, so `for (auto& x : make().value())` does not dangle.
-    constexpr T value() && noexcept(detail::access_noexcept) { check(true); return value_.v; }
+    constexpr T value() && noexcept(detail::access_noexcept) {
+        check(true);
+        return value_.v;
+    }
     constexpr T& operator*() & noexcept(detail::access_noexcept) { return value(); }
     constexpr const T& operator*() const& noexcept(detail::access_noexcept) { return value(); }
     constexpr T operator*() && noexcept(detail::access_noexcept) { return std::move(*this).value(); }
@@ -269,11 +281,16 @@ public:
     constexpr const T* operator->() const noexcept(detail::access_noexcept) { return &value(); }
 
     // The error; only valid when !has_value() (else as value() on an error, with errc::ok).
-    constexpr robowire::error error() const noexcept(detail::access_noexcept) { check(false); return error_; }
+    constexpr robowire::error error() const noexcept(detail::access_noexcept) {
+        check(false);
+        return error_;
+    }
     constexpr errc code() const noexcept { return ok_ ? errc::ok : error_.code; }
 
     template <class U>
-    constexpr T value_or(U&& fallback) const& { return ok_ ? value_.v : static_cast<T>(std::forward<U>(fallback)); }
+    constexpr T value_or(U&& fallback) const& {
+        return ok_ ? value_.v : static_cast<T>(std::forward<U>(fallback));
+    }
 
 private:
     template <class U>
@@ -289,7 +306,7 @@ private:
         detail::bad_result_access(e);
     }
     struct cleared {};  // tag of holder's value-initialising constructor
-    struct holder {  // default-initialises its value (value-initialising would clear it first)
+    struct holder {     // default-initialises its value (value-initialising would clear it first)
         T v;
         constexpr explicit holder(std::in_place_t) noexcept(std::is_nothrow_default_constructible_v<T>) {
             if (!std::is_constant_evaluated()) detail::run_time_only();
@@ -315,7 +332,9 @@ private:
 };
 
 template <class T>
-constexpr T& codec::unchecked_value(result<T>& r) noexcept { return r.value_.v; }
+constexpr T& codec::unchecked_value(result<T>& r) noexcept {
+    return r.value_.v;
+}
 template <class T, class A>
 constexpr T& detail::build_value(result<T>& r, const A& arg) noexcept {
     if (std::is_constant_evaluated()) {
@@ -327,7 +346,9 @@ constexpr T& detail::build_value(result<T>& r, const A& arg) noexcept {
     return r.value_.v;
 }
 template <class T>
-constexpr error codec::unchecked_error(const result<T>& r) noexcept { return r.error_; }
+constexpr error codec::unchecked_error(const result<T>& r) noexcept {
+    return r.error_;
+}
 
 // Shorthand for returning an error (offsets past 65535 become 65535).
 constexpr error fail(errc code, std::size_t offset) noexcept {
@@ -336,13 +357,17 @@ constexpr error fail(errc code, std::size_t offset) noexcept {
 namespace codec {
 // An error at an offset inside a message, which its table keeps below 65536
 // (checked when the table is built): no clamp, unlike fail().
-constexpr error fail_at(errc code, std::size_t offset) noexcept { return error{code, static_cast<std::uint16_t>(offset)}; }
+constexpr error fail_at(errc code, std::size_t offset) noexcept {
+    return error{code, static_cast<std::uint16_t>(offset)};
+}
 
 // x itself, as an expression that depends on D: a call taking it is resolved
 // when the enclosing template is instantiated, not where it is written, so
 // that a header's templates instantiate no codec until a program calls them.
 template <class D, class T>
-constexpr const T& deferred(const T& x) noexcept { return x; }
+constexpr const T& deferred(const T& x) noexcept {
+    return x;
+}
 }  // namespace codec
 
 namespace detail::inline ROBOWIRE_MODE_NAMESPACE {

@@ -14,8 +14,8 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
-#include <utility>
 #include <type_traits>
+#include <utility>
 
 #include "detail/check.hpp"
 #include "detail/field_list.hpp"
@@ -69,7 +69,10 @@ inline constexpr std::uint32_t enum_code_mask_v = [] {
 // Codes that form one run lo..hi, without gaps (else found == false).
 template <class E>
 inline constexpr auto enum_code_run_v = [] {
-    struct run { bool found; std::int64_t lo, hi; };
+    struct run {
+        bool found;
+        std::int64_t lo, hi;
+    };
     run r{!enum_table_v<E>.empty(), 0, 0};
     bool first = true;
     for (const auto& entry : enum_table_v<E>) {
@@ -113,7 +116,9 @@ template <class E>
 
 // A type with a field table (found by ADL: table_of(std::type_identity<M>)).
 template <class M>
-concept described = requires { table_of(std::type_identity<M>{}); };
+concept described = requires {
+    table_of(std::type_identity<M>{});
+};
 
 namespace detail {
 template <class M>
@@ -125,8 +130,8 @@ constexpr bool members_match() noexcept {
 
 // The table of a message or record type, checked once, at compile time.
 template <described M>
-inline constexpr auto table_v =
-    detail::checked_table(table_of(std::type_identity<M>{}), std::bool_constant<detail::members_match<M>()>{});
+inline constexpr auto table_v = detail::checked_table(table_of(std::type_identity<M>{}),
+                                                      std::bool_constant<detail::members_match<M>()>{});
 
 // One field: name, member, byte offset, wire type, valid raw range, unit.
 // The member may be a scalar, an enum, bool, text<N>, bytes<N> (tail), a
@@ -169,10 +174,10 @@ struct message_table {
     using message_type = M;
     std::string_view name;
     std::array<fixed_byte, K> fixed;
-    detail::field_list<F...> fields;  // fields.get<I>(), fields.each(fn)
+    detail::field_list<F...> fields;     // fields.get<I>(), fields.each(fn)
     std::size_t declared_max_input = 0;  // longest accepted input; 0: max_size(). Longer is decoded, the rest ignored.
-    std::size_t declared_size = 0;       // nonzero: the message is at least this long (reserved bytes after the last field)
-    std::size_t members_not_on_wire = 0; // struct members no field covers (e.g. decode statistics); checked
+    std::size_t declared_size = 0;  // nonzero: the message is at least this long (reserved bytes after the last field)
+    std::size_t members_not_on_wire = 0;  // struct members no field covers (e.g. decode statistics); checked
 
     static constexpr std::size_t field_count = sizeof...(F);
 
@@ -217,8 +222,10 @@ constexpr auto make_record(std::string_view name, F... fields) noexcept {
 }
 
 // Size limits of a message's encoding.
-template <described M> inline constexpr std::size_t min_size_v = table_v<M>.min_size();
-template <described M> inline constexpr std::size_t max_size_v = table_v<M>.max_size();
+template <described M>
+inline constexpr std::size_t min_size_v = table_v<M>.min_size();
+template <described M>
+inline constexpr std::size_t max_size_v = table_v<M>.max_size();
 
 // Calls fn(field) for each field of M's table, in table order.
 template <class M, class Fn>

@@ -17,10 +17,7 @@ public:
     constexpr text() noexcept = default;
     // From a string literal; one longer than N does not compile.
     template <std::size_t M>
-        requires(M - 1 <= N)
-    consteval text(const char (&literal)[M]) noexcept {
-        assign(std::string_view(literal, M - 1));
-    }
+    requires(M - 1 <= N) consteval text(const char (&literal)[M]) noexcept { assign(std::string_view(literal, M - 1)); }
     // From any string; value_out_of_range (offset N) if it is longer than N.
     static constexpr result<text> make(std::string_view s) noexcept {
         text t;

@@ -51,11 +51,17 @@ struct bits {
     static constexpr unsigned lo = Lo, width = Width;
 };
 // text<N> member: N bytes, NUL-padded.
-struct text { static constexpr wire_kind kind = wire_kind::text; };
+struct text {
+    static constexpr wire_kind kind = wire_kind::text;
+};
 // bytes<N> member: every byte from the offset to the end of the input.
-struct tail { static constexpr wire_kind kind = wire_kind::tail; };
+struct tail {
+    static constexpr wire_kind kind = wire_kind::tail;
+};
 // A struct member with a table of its own (no fixed bytes).
-struct record { static constexpr wire_kind kind = wire_kind::record; };
+struct record {
+    static constexpr wire_kind kind = wire_kind::record;
+};
 }  // namespace wire
 
 // Valid raw range, inclusive.

@@ -49,7 +49,8 @@ inline constexpr std::size_t any_command_index_v =
 // span passed on by value is copied through the stack first, 8 more bytes of
 // Cortex-M code.)
 template <class Message, std::size_t I, class Frame>
-ROBOWIRE_ALWAYS_INLINE constexpr result<Message> decode_command(const Frame& f, const std::span<const std::uint8_t>& in) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr result<Message> decode_command(const Frame& f,
+                                                                const std::span<const std::uint8_t>& in) noexcept {
     constexpr std::size_t any = any_command_index_v<Message>;
     if constexpr (I == std::variant_size_v<Message>) {
         return Message{std::in_place_index<any>, f};
@@ -78,6 +79,6 @@ template <class Message = message>
     if (!f) return codec::unchecked_error(f);
     return impl::decode_command<Message, 0>(*f, in);
 }
-}  // inline namespace ROBOWIRE_MODE_NAMESPACE
+}  // namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire::navbot

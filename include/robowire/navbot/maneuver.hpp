@@ -20,7 +20,11 @@ namespace robowire::navbot {
 enum class switch_a : std::uint8_t { stop = 0, start = 1, start_touch_panel = 2 };  // SWA_en
 enum class switch_b : std::uint8_t { posture = 0, mark = 1 };                       // SWB_posture
 enum class switch_c : std::uint8_t { unlock = 0, lock = 1 };                        // SWC_roll_lock
-enum class switch_d : std::uint8_t { standard = 0, pitch_adjust = 1, ball_poise = 2 };  // SWD_posture_option ("default" = standard)
+enum class switch_d : std::uint8_t {
+    standard = 0,
+    pitch_adjust = 1,
+    ball_poise = 2
+};  // SWD_posture_option ("default" = standard)
 
 constexpr auto enum_table_of(std::type_identity<switch_a>) {
     return std::array<enum_entry<switch_a>, 3>{
@@ -33,8 +37,9 @@ constexpr auto enum_table_of(std::type_identity<switch_c>) {
     return std::array<enum_entry<switch_c>, 2>{{{switch_c::unlock, "unlock"}, {switch_c::lock, "lock"}}};
 }
 constexpr auto enum_table_of(std::type_identity<switch_d>) {
-    return std::array<enum_entry<switch_d>, 3>{
-        {{switch_d::standard, "standard"}, {switch_d::pitch_adjust, "pitch_adjust"}, {switch_d::ball_poise, "ball_poise"}}};
+    return std::array<enum_entry<switch_d>, 3>{{{switch_d::standard, "standard"},
+                                                {switch_d::pitch_adjust, "pitch_adjust"},
+                                                {switch_d::ball_poise, "ball_poise"}}};
 }
 
 // Maneuver command. Ranges: roll, pitch, yaw -100..100; height 0..100; ball_x, ball_y -5..5.
@@ -57,7 +62,9 @@ struct maneuver {
 constexpr auto table_of(std::type_identity<maneuver>) {
     auto t = make_table<maneuver>(
         "maneuver",
-        {{0, header1, errc::bad_header}, {1, header2, errc::bad_header}, {2, command::maneuver, errc::bad_command},
+        {{0, header1, errc::bad_header},
+         {1, header2, errc::bad_header},
+         {2, command::maneuver, errc::bad_command},
          {3, 0x00, errc::bad_sequence}},
         field{"roll", &maneuver::roll, 5, wire::i8{}, range{-100, 100}, unit{"%"}},
         field{"height", &maneuver::height, 6, wire::u8{}, range{0, 100}, unit{"%"}},
@@ -85,8 +92,7 @@ constexpr void convert_signed(std::span<std::uint8_t> b) noexcept {
         if constexpr (std::remove_cvref_t<decltype(f)>::kind == wire_kind::i8) {
             if constexpr (ToSignMagnitude)
                 b[f.offset] = to_sign_magnitude(static_cast<std::int8_t>(b[f.offset])).value_or(std::uint8_t{0x80});
-            else
-                b[f.offset] = static_cast<std::uint8_t>(from_sign_magnitude(b[f.offset]));
+            else b[f.offset] = static_cast<std::uint8_t>(from_sign_magnitude(b[f.offset]));
         }
     });
 }
@@ -115,6 +121,6 @@ template <class Deferred = void>
     impl::convert_signed<false, Deferred>(copy);
     return robowire::decode<maneuver>(codec::deferred<Deferred>(std::span<const std::uint8_t>(copy)));
 }
-}  // inline namespace ROBOWIRE_MODE_NAMESPACE
+}  // namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire::navbot

@@ -66,8 +66,15 @@ public:
         constexpr iterator() noexcept = default;
         constexpr iterator(const basic_fragmenter* f, std::size_t i) noexcept : f_(f), i_(i) {}
         constexpr value_type operator*() const noexcept { return (*f_)[i_]; }
-        constexpr iterator& operator++() noexcept { ++i_; return *this; }
-        constexpr iterator operator++(int) noexcept { auto t = *this; ++i_; return t; }
+        constexpr iterator& operator++() noexcept {
+            ++i_;
+            return *this;
+        }
+        constexpr iterator operator++(int) noexcept {
+            auto t = *this;
+            ++i_;
+            return t;
+        }
         friend constexpr bool operator==(const iterator& a, const iterator& b) noexcept { return a.i_ == b.i_; }
 
     private:
@@ -94,7 +101,7 @@ constexpr result<fragmenter> make_frames(std::uint8_t command, std::span<const s
 constexpr result<text_fragmenter> json_frames(std::string_view text) noexcept {
     return text_fragmenter::make(command::json, {text.data(), text.size()});
 }
-}  // inline namespace ROBOWIRE_MODE_NAMESPACE
+}  // namespace ROBOWIRE_MODE_NAMESPACE
 
 // Checks that `text` is one complete JSON object: optional white space, an
 // object whose braces and brackets balance and whose strings are closed,
@@ -136,15 +143,15 @@ constexpr result<std::string_view> json_object(std::string_view text) noexcept {
 
 // What reassembler::push says about a frame.
 enum class reassembly : std::uint8_t {
-    need_more,   // part of a message; more frames to come
-    complete,    // the message is complete: command(), payload(), text(), json()
-    single,      // a one-frame message of another command arrived while a message is in
-                 // progress: it is a whole message, read it from the frame you pushed;
-                 // the message in progress is kept
-    duplicate,   // an exact repeat of the last frame of a multi-frame message: ignored
-    restarted,   // the sender started the message over (same command, `remaining` higher
-                 // than expected): the partial message was dropped, this frame begins the new one
-    discarded,   // dropped: part of a message already broken by an error
+    need_more,  // part of a message; more frames to come
+    complete,   // the message is complete: command(), payload(), text(), json()
+    single,     // a one-frame message of another command arrived while a message is in
+                // progress: it is a whole message, read it from the frame you pushed;
+                // the message in progress is kept
+    duplicate,  // an exact repeat of the last frame of a multi-frame message: ignored
+    restarted,  // the sender started the message over (same command, `remaining` higher
+                // than expected): the partial message was dropped, this frame begins the new one
+    discarded,  // dropped: part of a message already broken by an error
 };
 
 inline namespace ROBOWIRE_MODE_NAMESPACE {
@@ -285,11 +292,11 @@ private:
     frame last_{};                     // the last frame seen of a multi-frame message (if has_last_)
     std::uint8_t last_remaining_ = 0;  // `remaining` of the last frame taken
     std::uint8_t command_ = 0;
-    std::uint8_t skip_command_ = 0;    // command of the broken message being discarded
+    std::uint8_t skip_command_ = 0;  // command of the broken message being discarded
     bool skipping_ = false;
     bool has_last_ = false;
     state state_ = state::idle;
 };
-}  // inline namespace ROBOWIRE_MODE_NAMESPACE
+}  // namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire::navbot

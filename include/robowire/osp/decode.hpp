@@ -25,15 +25,14 @@ inline namespace ROBOWIRE_MODE_NAMESPACE {
 // instantiated in a translation unit that does not call it.
 template <class Message = message>
 [[nodiscard]] constexpr decode_result decode(std::span<const std::uint8_t> in) noexcept;
-}  // inline namespace ROBOWIRE_MODE_NAMESPACE
+}  // namespace ROBOWIRE_MODE_NAMESPACE
 
 // The result of osp::decode: the message, or an error; frame() holds DEV,
 // CMD and P1..P4 whenever the markers and length were right, so an
 // unknown_message (or a bad field) still shows what came in.
 class decode_result : public result<message> {
 public:
-    constexpr decode_result(result<message> r, std::optional<osp::frame> f) noexcept
-        : result<message>(r), frame_(f) {}
+    constexpr decode_result(result<message> r, std::optional<osp::frame> f) noexcept : result<message>(r), frame_(f) {}
     constexpr explicit decode_result(std::in_place_t) noexcept : result<message>(std::in_place) {}
     using result<message>::operator=;
     constexpr const std::optional<osp::frame>& frame() const noexcept { return frame_; }
@@ -112,7 +111,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_message(decode_result& d, std::span
     if (const error e = codec::decode_fields(m, in); e.code != errc::ok) d = e;
 }
 template <std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::uint16_t key, std::span<const std::uint8_t> in,
+ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::uint16_t key,
+                                                    std::span<const std::uint8_t> in,
                                                     std::index_sequence<I...>) noexcept {
     const bool known =
         ((key == key_of<std::variant_alternative_t<I, message>>() ? (decode_message<I>(d, in), true) : false) || ...);
@@ -138,7 +138,7 @@ ROBOWIRE_SIZE_NOINLINE constexpr void write_frame(bytes<frame_size>& b, std::uin
     out[8] = end1;
     out[9] = end2;
 }
-}  // inline namespace ROBOWIRE_MODE_NAMESPACE
+}  // namespace ROBOWIRE_MODE_NAMESPACE
 }  // namespace impl
 
 namespace impl::inline ROBOWIRE_MODE_NAMESPACE {
@@ -182,7 +182,7 @@ template <class Message>
 template <class Message = message>
 [[nodiscard]] constexpr result<bytes<frame_size>> encode(const std::type_identity_t<Message>& m) noexcept {
     result<bytes<frame_size>> r{std::in_place, codec::unset_t{}};  // write_frame sets every byte
-#if defined(__cpp_exceptions)  // valueless only after an exception
+#if defined(__cpp_exceptions)                                      // valueless only after an exception
     if (m.valueless_by_exception()) {
         r = fail(errc::unknown_message, 2);
         return r;
@@ -206,15 +206,16 @@ template <class Handler>
 [[nodiscard]] constexpr result<std::optional<bytes<frame_size>>> serve(std::span<const std::uint8_t> request,
                                                                        Handler&& handler) {
     result<std::optional<bytes<frame_size>>> r{std::in_place};  // no answer (yet)
-    auto d = decode(codec::deferred<Handler>(request));  // instantiated with serve
+    auto d = decode(codec::deferred<Handler>(request));         // instantiated with serve
     if (!d) {
         r = codec::unchecked_error(d);
         return r;
     }
-    const auto reply = [&r](const auto& answer) {  // encoded straight into r
+    const auto reply = [&r](const auto& answer) {                         // encoded straight into r
         auto& out = codec::unchecked_value(r).emplace(codec::unset_t{});  // write_frame fills it
         impl::write_frame(out, impl::key_of<std::remove_cvref_t<decltype(answer)>>());
-        if (const error e = impl::encode_fields(answer, std::span<std::uint8_t, frame_size>(out.data(), frame_size))) r = e;
+        if (const error e = impl::encode_fields(answer, std::span<std::uint8_t, frame_size>(out.data(), frame_size)))
+            r = e;
     };
     codec::visit_held(codec::unchecked_value(d), [&](const auto& msg) {
         using M = std::remove_cvref_t<decltype(msg)>;
@@ -224,7 +225,10 @@ template <class Handler>
             using R = std::invoke_result_t<Handler&, const M&>;
             if constexpr (std::is_void_v<R>) {
                 handler(msg);
-            } else if constexpr (requires(const R& a) { a.has_value(); *a; }) {
+            } else if constexpr (requires(const R& a) {
+                                     a.has_value();
+                                     *a;
+                                 }) {
                 const R a = handler(msg);
                 if (a) reply(*a);
             } else {
@@ -234,6 +238,6 @@ template <class Handler>
     });
     return r;
 }
-}  // inline namespace ROBOWIRE_MODE_NAMESPACE
+}  // namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire::osp

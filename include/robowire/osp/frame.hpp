@@ -27,8 +27,10 @@ struct frame {
 
 constexpr auto table_of(std::type_identity<frame>) {
     return make_table<frame>("frame",
-                             {{0, start1, errc::bad_header}, {1, start2, errc::bad_header},
-                              {8, end1, errc::bad_trailer}, {9, end2, errc::bad_trailer}},
+                             {{0, start1, errc::bad_header},
+                              {1, start2, errc::bad_header},
+                              {8, end1, errc::bad_trailer},
+                              {9, end2, errc::bad_trailer}},
                              field{"device", &frame::device, 2, wire::u8{}},
                              field{"command", &frame::command, 3, wire::u8{}},
                              field{"params", &frame::params, 4, wire::u8{}});

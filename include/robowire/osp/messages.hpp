@@ -6,8 +6,8 @@
 #include "../core/config.hpp"  // first: the C++ version check
 
 #include <cstdint>
-#include <variant>
 #include <numbers>
+#include <variant>
 
 #include "../core/flag_bits.hpp"
 #include "frame.hpp"
@@ -17,8 +17,10 @@ namespace robowire::osp {
 // DEV_TYPE values (INFO_DEV_TYPE P1). OBP-1 is spelled OPB-1 in places in the document.
 enum class device_type : std::uint8_t { invalid = 0x00, arm1 = 0x01, obp1 = 0x02, o2d1 = 0x03 };
 constexpr auto enum_table_of(std::type_identity<device_type>) {
-    return std::array<enum_entry<device_type>, 4>{
-        {{device_type::invalid, "invalid"}, {device_type::arm1, "arm1"}, {device_type::obp1, "obp1"}, {device_type::o2d1, "o2d1"}}};
+    return std::array<enum_entry<device_type>, 4>{{{device_type::invalid, "invalid"},
+                                                   {device_type::arm1, "arm1"},
+                                                   {device_type::obp1, "obp1"},
+                                                   {device_type::o2d1, "o2d1"}}};
 }
 
 namespace generic {
@@ -36,7 +38,8 @@ struct device_type {
     friend constexpr bool operator==(const device_type&, const device_type&) = default;
 };
 constexpr auto table_of(std::type_identity<device_type>) {
-    return make_table<device_type>("device_type", impl::fixed(0x00, 0x11), field{"type", &device_type::type, 4, wire::u8{}});
+    return make_table<device_type>("device_type", impl::fixed(0x00, 0x11),
+                                   field{"type", &device_type::type, 4, wire::u8{}});
 }
 }  // namespace generic
 
@@ -49,8 +52,9 @@ struct set_angle {
     friend constexpr bool operator==(const set_angle&, const set_angle&) = default;
 };
 constexpr auto table_of(std::type_identity<set_angle>) {
-    return make_table<set_angle>("set_angle", impl::fixed(0x01, 0x02), field{"joint", &set_angle::joint, 4, wire::u8{}},
-                                 field{"angle", &set_angle::angle, 5, wire::u16le{}, unit{"rad", std::numbers::pi / 16384.0}});
+    return make_table<set_angle>(
+        "set_angle", impl::fixed(0x01, 0x02), field{"joint", &set_angle::joint, 4, wire::u8{}},
+        field{"angle", &set_angle::angle, 5, wire::u16le{}, unit{"rad", std::numbers::pi / 16384.0}});
 }
 
 }  // namespace arm1
@@ -69,7 +73,9 @@ struct request_current {  // OBP_CMD_REQ_CURRENT, CMD 0x03 -> current
 struct request_status {  // OBP_CMD_REQ_STATUS, CMD 0x04 -> status
     friend constexpr bool operator==(const request_status&, const request_status&) = default;
 };
-constexpr auto table_of(std::type_identity<request_soc>) { return make_table<request_soc>("request_soc", impl::fixed(0x02, 0x01)); }
+constexpr auto table_of(std::type_identity<request_soc>) {
+    return make_table<request_soc>("request_soc", impl::fixed(0x02, 0x01));
+}
 constexpr auto table_of(std::type_identity<request_voltage>) {
     return make_table<request_voltage>("request_voltage", impl::fixed(0x02, 0x02));
 }

@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <cstring>
 #include <optional>
-#include <type_traits>
 #include <span>
+#include <type_traits>
 
 #include "frame.hpp"
 
@@ -111,10 +111,10 @@ public:
         }
     }
 
-    constexpr std::uint64_t frames() const noexcept { return frames_; }          // frames reported
-    constexpr std::uint64_t skipped() const noexcept { return skipped_; }        // bytes not in any frame
+    constexpr std::uint64_t frames() const noexcept { return frames_; }              // frames reported
+    constexpr std::uint64_t skipped() const noexcept { return skipped_; }            // bytes not in any frame
     constexpr std::uint64_t false_starts() const noexcept { return false_starts_; }  // candidates abandoned
-    constexpr std::size_t pending() const noexcept { return len_; }              // bytes of a partial candidate
+    constexpr std::size_t pending() const noexcept { return len_; }                  // bytes of a partial candidate
     // Forgets the partial candidate and the counters.
     constexpr void reset() noexcept { *this = scanner{}; }
 

@@ -57,8 +57,12 @@ constexpr std::uint16_t soc_basis_points(std::uint16_t raw, scale s = scale::doc
     if (s == scale::published_firmware) return raw;
     return static_cast<std::uint16_t>((std::uint32_t{raw} * 10000u + 32767u) / 65535u);
 }
-constexpr std::int32_t millivolts(const voltage& m, scale s = scale::document) noexcept { return millivolts(m.centivolts, s); }
-constexpr std::int32_t milliamps(const current& m, scale s = scale::document) noexcept { return milliamps(m.milliamps, s); }
+constexpr std::int32_t millivolts(const voltage& m, scale s = scale::document) noexcept {
+    return millivolts(m.centivolts, s);
+}
+constexpr std::int32_t milliamps(const current& m, scale s = scale::document) noexcept {
+    return milliamps(m.milliamps, s);
+}
 constexpr std::uint16_t soc_basis_points(const soc& m, scale s = scale::document) noexcept {
     return soc_basis_points(m.soc_raw, s);
 }

@@ -22,7 +22,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool in_range(std::int64_t v) noexcept {
     if constexpr (lo > hi) {  // no value the wire can hold is valid
         (void)v;
         return false;
-    } else if constexpr (FullLo >= std::numeric_limits<std::int32_t>::min() && FullHi <= std::numeric_limits<std::int32_t>::max()) {
+    } else if constexpr (FullLo >= std::numeric_limits<std::int32_t>::min() &&
+                         FullHi <= std::numeric_limits<std::int32_t>::max()) {
         // one unsigned compare: v - lo wraps above hi - lo when v < lo
         const auto d = static_cast<std::uint32_t>(static_cast<std::int32_t>(v)) - static_cast<std::uint32_t>(lo);
         return d <= static_cast<std::uint32_t>(hi - lo);
@@ -34,7 +35,9 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool in_range(std::int64_t v) noexcept {
 }
 
 template <class M>
-concept reports_trailing = requires(M m) { m.ignored_trailing_bytes = std::size_t{}; };
+concept reports_trailing = requires(M m) {
+    m.ignored_trailing_bytes = std::size_t{};
+};
 
 // Field I of M's table, as a compile-time constant.
 template <class M, std::size_t I>
@@ -48,7 +51,8 @@ inline constexpr std::size_t fixed_count_v = table_v<M>.fixed.size();
 
 // Wire type W holds one number, enum, bool or float (not a record, text or tail).
 template <class W>
-inline constexpr bool scalar_wire_v = W::kind != wire_kind::record && W::kind != wire_kind::text && W::kind != wire_kind::tail;
+inline constexpr bool scalar_wire_v =
+    W::kind != wire_kind::record&& W::kind != wire_kind::text&& W::kind != wire_kind::tail;
 
 inline namespace ROBOWIRE_MODE_NAMESPACE {
 // Whether array field F is coded as one element's code in a loop (ROBOWIRE_ARRAY_LOOPS).
@@ -59,8 +63,10 @@ constexpr bool decode_in_loop() noexcept {
     else return false;
 }
 template <class F>
-constexpr bool encode_in_loop() noexcept { return ROBOWIRE_ARRAY_LOOPS != 0 && F::count >= 2; }
-}  // inline namespace ROBOWIRE_MODE_NAMESPACE
+constexpr bool encode_in_loop() noexcept {
+    return ROBOWIRE_ARRAY_LOOPS != 0 && F::count >= 2;
+}
+}  // namespace ROBOWIRE_MODE_NAMESPACE
 
 // An array of at least 4 one-byte integers whose wire bytes are their memory
 // bytes: stored whole once checked (one memcpy at run time).

@@ -50,8 +50,9 @@ constexpr std::size_t aggregate_member_count() noexcept {
 template <class M, std::size_t N>
 constexpr bool aggregate_has_members() noexcept {
     if constexpr (!std::is_aggregate_v<M>) return true;
-    else return initialisable_with<M>(std::make_index_sequence<N>{}) &&
-                !initialisable_with<M>(std::make_index_sequence<N + 1>{});
+    else
+        return initialisable_with<M>(std::make_index_sequence<N>{}) &&
+               !initialisable_with<M>(std::make_index_sequence<N + 1>{});
 }
 
 // Checks a message or record table; returns it unchanged. MembersMatch:

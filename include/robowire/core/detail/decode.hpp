@@ -41,12 +41,17 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_scalar(E& v, std::span<const std::u
         else raw = load_le<typename W::raw_type>(in.data() + off);
         if constexpr (std::is_enum_v<E>) {
             const auto e = static_cast<E>(raw);
-            if (!is_valid_enum(e)) [[unlikely]] { err = codec::fail_at(errc::invalid_enum, off); return false; }
+            if (!is_valid_enum(e)) [[unlikely]] {
+                err = codec::fail_at(errc::invalid_enum, off);
+                return false;
+            }
             v = e;
         } else {
             constexpr range full = [] {  // what the wire bytes can hold
                 if constexpr (W::kind == wire_kind::bits) return range{0, low_mask(W::width)};
-                else return range{std::numeric_limits<typename W::raw_type>::min(), std::numeric_limits<typename W::raw_type>::max()};
+                else
+                    return range{std::numeric_limits<typename W::raw_type>::min(),
+                                 std::numeric_limits<typename W::raw_type>::max()};
             }();
             if constexpr (Min > full.min || Max < full.max) {
                 if (!in_range<Min, Max, full.min, full.max>(raw)) [[unlikely]] {
@@ -65,8 +70,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
                                                      error& err) noexcept;
 
 template <class M, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, std::size_t base, error& err,
-                                                    std::index_sequence<I...>) noexcept;
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, std::size_t base,
+                                                    error& err, std::index_sequence<I...>) noexcept;
 
 template <class M, std::size_t I, class V, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_array(V& v, std::span<const std::uint8_t> in, std::size_t off, error& err,
@@ -106,8 +111,14 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::ui
     constexpr auto member_ptr = f.member;
     auto& member = m.*member_ptr;
     if constexpr (F::is_optional) {
-        if (in.size() <= off) { member.reset(); return true; }  // absent
-        if (in.size() < off + F::size) { err = codec::fail_at(errc::bad_length, off); return false; }
+        if (in.size() <= off) {
+            member.reset();
+            return true;
+        }  // absent
+        if (in.size() < off + F::size) {
+            err = codec::fail_at(errc::bad_length, off);
+            return false;
+        }
         if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // decoded in place (on an error the message is unspecified)
             return decode_value<M, I>(member.emplace(), in, off, err);
         } else {
@@ -124,8 +135,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::ui
 }
 
 template <class M, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, std::size_t base, error& err,
-                                                    std::index_sequence<I...>) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, std::size_t base,
+                                                    error& err, std::index_sequence<I...>) noexcept {
     (void)m, (void)in, (void)base, (void)err;  // messages without fields
     return (decode_field<M, I>(m, in, base, err) && ...);
 }
@@ -152,7 +163,10 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
         std::size_t len = 0;
         while (len < n && in[off + len] != 0) ++len;
         for (std::size_t i = len; i < n; ++i)
-            if (in[off + i] != 0) { err = codec::fail_at(errc::bad_padding, off + i); return false; }
+            if (in[off + i] != 0) {
+                err = codec::fail_at(errc::bad_padding, off + i);
+                return false;
+            }
         if (!std::is_constant_evaluated()) {  // straight from the input (char may view any bytes)
             v.assign(std::string_view(reinterpret_cast<const char*>(in.data() + off), len));
             return true;

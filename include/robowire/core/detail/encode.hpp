@@ -32,7 +32,10 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_scalar(const E& v, std::size_t off, 
     if constexpr (W::kind == wire_kind::f32le) {
         return true;
     } else if constexpr (std::is_enum_v<E>) {
-        if (!is_valid_enum(v)) [[unlikely]] { err = codec::fail_at(errc::invalid_enum, off); return false; }
+        if (!is_valid_enum(v)) [[unlikely]] {
+            err = codec::fail_at(errc::invalid_enum, off);
+            return false;
+        }
         return true;
     } else {
         if constexpr (W::kind == wire_kind::bits || std::is_same_v<E, bool> ||
@@ -125,7 +128,10 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off,
     } else if constexpr (W::kind == wire_kind::text) {
         const auto s = v.view();
         for (std::size_t i = 0; i < s.size(); ++i)
-            if (s[i] == '\0') { err = codec::fail_at(errc::value_out_of_range, off + i); return false; }
+            if (s[i] == '\0') {
+                err = codec::fail_at(errc::value_out_of_range, off + i);
+                return false;
+            }
         return true;
     } else if constexpr (W::kind == wire_kind::tail) {
         return true;
@@ -223,7 +229,10 @@ constexpr result<std::size_t> encoded_size(const M& m, std::index_sequence<I...>
         constexpr auto member_ptr = f.member;
         if constexpr (F::is_optional) {
             if (!(m.*member_ptr)) {
-                if (!absent_seen) { absent_seen = true; first_absent = f.offset; }
+                if (!absent_seen) {
+                    absent_seen = true;
+                    first_absent = f.offset;
+                }
             } else if (absent_seen) {
                 missing = true;
             } else if (f.end() > size) {

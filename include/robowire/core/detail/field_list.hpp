@@ -34,7 +34,9 @@ struct field_list : field_list_base<std::index_sequence_for<F...>, F...> {
 
     // Field I.
     template <std::size_t I>
-    constexpr const auto& get() const noexcept { return slot_of<I>(*this); }
+    constexpr const auto& get() const noexcept {
+        return slot_of<I>(*this);
+    }
     // fn(field) for each field, in order.
     template <class Fn>
     constexpr void each(Fn&& fn) const {
