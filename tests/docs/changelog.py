@@ -4,7 +4,8 @@
 
 - every section heading is `## X.Y.Z (unreleased)` or `## X.Y.Z (YYYY-MM-DD)`,
   newest first, each version once, only the first one unreleased;
-- the first section's version is the one in CMakeLists.txt's project();
+- the first section's version is the one in core/config.hpp (ROBOWIRE_VERSION_*),
+  which CMakeLists.txt and meson.build use;
 - every tag vX.Y.Z of the repository (when it is a git checkout) has a dated
   section.
 """
@@ -22,9 +23,10 @@ def version_key(v):
 
 with open(os.path.join(ROOT, "CHANGELOG.md"), encoding="utf-8") as f:
     headings = [line.rstrip("\n") for line in f if line.startswith("## ")]
-with open(os.path.join(ROOT, "CMakeLists.txt"), encoding="utf-8") as f:
-    m = re.search(r"project\(\s*robowire\s+VERSION\s+([0-9.]+)", f.read())
-project_version = m.group(1) if m else None
+with open(os.path.join(ROOT, "include", "robowire", "core", "config.hpp"), encoding="utf-8") as f:
+    config = f.read()
+parts = [re.search(rf"^#define ROBOWIRE_VERSION_{p} (\d+)$", config, re.M) for p in ("MAJOR", "MINOR", "PATCH")]
+project_version = ".".join(m.group(1) for m in parts) if all(parts) else None
 
 failures = []
 sections = []
@@ -44,7 +46,7 @@ if versions != sorted(versions, key=version_key, reverse=True):
 if not sections:
     failures.append("CHANGELOG.md: no section")
 elif sections[0][0] != project_version:
-    failures.append(f"CHANGELOG.md: the first section is {sections[0][0]}, CMakeLists.txt says {project_version}")
+    failures.append(f"CHANGELOG.md: the first section is {sections[0][0]}, config.hpp says {project_version}")
 
 tags = subprocess.run(["git", "-C", ROOT, "tag", "--list", "v*"], capture_output=True, text=True)
 dated = {v for v, d in sections if d != "unreleased"}
@@ -56,4 +58,4 @@ for line in failures:
     print(line)
 if failures:
     sys.exit(1)
-print(f"CHANGELOG.md: {len(sections)} sections, the first is {sections[0][0]} ({sections[0][1]}) as in CMakeLists.txt")
+print(f"CHANGELOG.md: {len(sections)} sections, the first is {sections[0][0]} ({sections[0][1]}) as in config.hpp")
