@@ -8,7 +8,13 @@ Usage: scripts/amalgamate.py [OUTPUT]   (default: build/single/robowire.hpp)"""
 import os, re, sys
 
 root = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "include"))
-out_path = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "..", "build", "single", "robowire.hpp")
+args = sys.argv[1:]
+if args and args[0] in ("-h", "--help"):
+    print(__doc__)
+    sys.exit(0)
+if len(args) > 1 or (args and args[0].startswith("-")):
+    sys.exit("usage: scripts/amalgamate.py [OUTPUT]   (default: build/single/robowire.hpp)")
+out_path = args[0] if args else os.path.join(root, "..", "build", "single", "robowire.hpp")
 local = re.compile(r'#\s*include\s+"([^"]+)"')
 done, order = set(), []
 
