@@ -2,7 +2,7 @@
 """Deterministic benchmark figures: instructions and estimated cycles per
 message, counted by callgrind over the measured loop of every benchmark.
 
-    bench/instructions.py BUILD_DIR [--out FILE] [--keep DIR]
+    bench/instructions.py BUILD_DIR [--out FILE] [--keep DIR] [--filter REGEX]
 
 Runs BUILD_DIR/bench/robowire_bench twice under callgrind (2 and 4 rounds of
 each benchmark's input rotation, in parallel), takes the difference of the
@@ -71,7 +71,7 @@ def parse_dump(path):
     return {key: dict(zip(events, row)) for key, row in cost.items()}
 
 
-def run(binary, rounds, keep):
+def run(binary, rounds, keep, filter_regex=None):
     env = {"PATH": "/usr/bin:/bin", "ROBOWIRE_BENCH_ROUNDS": str(rounds), "GLIBC_TUNABLES": TUNABLES,
            "LD_BIND_NOW": "1"}
     # The same argv, environment, program path and working directory on every
@@ -85,6 +85,8 @@ def run(binary, rounds, keep):
            "--toggle-collect=benchmark::State::FinishKeepRunning()",
            "--callgrind-out-file=cg", str(out / "bench"), "--benchmark_out=results.json",
            "--benchmark_out_format=json"]
+    if filter_regex:
+        cmd.append(f"--benchmark_filter={filter_regex}")
     try:
         proc = subprocess.run(cmd, env=env, cwd=out, capture_output=True, text=True)
         if proc.returncode != 0:
@@ -140,10 +142,10 @@ def libc_version():
     return out[0] if out else "unknown"
 
 
-def measure(build, keep=None):
+def measure(build, keep=None, filter_regex=None):
     binary = pathlib.Path(build) / "bench" / "robowire_bench"
     with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
-        first, second = pool.map(lambda r: run(binary, r, keep), ROUNDS)
+        first, second = pool.map(lambda r: run(binary, r, keep, filter_regex), ROUNDS)
     cases = {}
     libc_functions = set()
     for name, (iters2, batch, costs2) in second.items():
@@ -195,8 +197,12 @@ def main():
     p.add_argument("build", help="the benchmark build directory (bench/run's build/bench)")
     p.add_argument("--out", help="JSON file to write (default BUILD/instructions.json)")
     p.add_argument("--keep", help="keep the callgrind dumps in this directory")
+    p.add_argument("--filter", help="only the benchmarks whose name matches this regular expression "
+                   "(Google Benchmark's --benchmark_filter; include the baselines: 'decode_command_mixed')")
     args = p.parse_args()
-    data = measure(args.build, args.keep)
+    if args.filter and not args.out:
+        p.error("--filter writes part of the cases: give --out FILE (BUILD/instructions.json is what bench/check reads)")
+    data = measure(args.build, args.keep, args.filter)
     out = args.out or os.path.join(args.build, "instructions.json")
     with open(out, "w") as f:
         json.dump(data, f, indent=1)
