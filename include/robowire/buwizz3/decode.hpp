@@ -19,12 +19,14 @@ inline namespace ROBOWIRE_MODE_NAMESPACE {
 // Decodes a packet written to the device; unknown_message (offset 0) for an unknown command byte.
 // (A template, so that nothing is instantiated in a translation unit that does not call it.)
 template <class Command = command>
-[[nodiscard]] constexpr result<Command> decode_command(std::span<const std::uint8_t> in) noexcept {
+[[nodiscard]] ROBOWIRE_SPEED_INLINE constexpr result<Command> decode_command(
+    std::span<const std::uint8_t> in) noexcept {
     return decode_variant<Command, 0>(in);
 }
 // Decodes a notification from the device; unknown_message (offset 0) for an unknown command byte.
 template <class Notification = notification>
-[[nodiscard]] constexpr result<Notification> decode_notification(std::span<const std::uint8_t> in) noexcept {
+[[nodiscard]] ROBOWIRE_SPEED_INLINE constexpr result<Notification> decode_notification(
+    std::span<const std::uint8_t> in) noexcept {
     return decode_variant<Notification, 0>(in);
 }
 }  // namespace ROBOWIRE_MODE_NAMESPACE

@@ -68,6 +68,14 @@
 #define ROBOWIRE_SIZE_NOINLINE
 #endif
 
+// Inlines a protocol's dispatcher (decode_variant, decode_command, ...) into its
+// caller; under ROBOWIRE_OPTIMIZE_SIZE it stays one out-of-line copy.
+#if ROBOWIRE_OPTIMIZE_SIZE
+#define ROBOWIRE_SPEED_INLINE inline
+#else
+#define ROBOWIRE_SPEED_INLINE ROBOWIRE_ALWAYS_INLINE
+#endif
+
 // ROBOWIRE_ARRAY_LOOPS: how array fields are coded (decode, encode).
 //   0: one copy of the element's code per element (unrolled);
 //   1: one copy of the element's code in a loop, for every array;

@@ -185,10 +185,11 @@ struct smallest_alternative<std::variant<M...>> {
         return best;
     }();
 };
-// decode_variant's work, out of line: the input as pointer and size (a span that
-// an inlined caller passes on by value is copied through the stack first).
+// decode_variant's work, inlined into the caller (out of line, one copy, under
+// ROBOWIRE_OPTIMIZE_SIZE): the input as pointer and size (a span that an
+// inlined caller passes on by value is copied through the stack first).
 template <class Variant, std::size_t KeyOffset>
-constexpr result<Variant> decode_variant_at(const std::uint8_t* data, std::size_t size) noexcept {
+ROBOWIRE_SPEED_INLINE constexpr result<Variant> decode_variant_at(const std::uint8_t* data, std::size_t size) noexcept {
     const std::span<const std::uint8_t> in(data, size);
     // An error until the decoded alternative is built in place (nothing cleared
     // first); under ROBOWIRE_OPTIMIZE_SIZE the smallest alternative, replaced below.
