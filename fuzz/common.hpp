@@ -60,7 +60,7 @@ inline bool same_bytes(std::span<const std::uint8_t> a, std::span<const std::uin
 
 // A result's error text: to_string of an error's code is a real text (not
 // empty, not "ok", not that of a code outside errc); a value's code() is
-// errc::ok, whose text is "ok". Cheap: for every result a harness gets.
+// errc::ok, whose text is "ok". Cheap (a switch): for every result.
 template <class T>
 void check_text(const robowire::result<T>& r) {
     const std::string_view text = robowire::to_string(r.code());
@@ -73,7 +73,8 @@ void check_text(const robowire::result<T>& r) {
 // built for the result's error (errc::ok for a value: what error() of a value
 // throws) carries it, and its what() gives the code's text and ends with
 // " at byte <offset>" (for a value: says error() was called on one). Built
-// directly, not thrown: cheap enough for every input.
+// directly, not thrown, yet some 1 us under ASan, a frame decode's time:
+// the frame decoders' harnesses (some 4 us an input) use check_text.
 template <class T>
 void check_access(const robowire::result<T>& r) {
     check_text(r);
@@ -93,8 +94,8 @@ void check_access(const robowire::result<T>& r) {
 }
 
 // check_access, and the wrong access itself: value() of an error, error() of
-// a value, throws that exception. A throw costs some 20 us under ASan (a
-// frame decode a few): for harnesses whose inputs take far longer than that.
+// a value, throws that exception. A throw costs some 20 us under ASan: for
+// harnesses whose inputs take far longer than that (navbot_reassembler).
 template <class T>
 void check_throws(const robowire::result<T>& r) {
     check_access(r);
