@@ -1,7 +1,8 @@
 // OSP frames: osp::decode keeps the frame decode<osp::frame> reads; re-encode
-// (reserved bytes come back as 0). Each message's own decoder,
-// robowire::decode<M>, agrees with osp::decode: the message it chose decodes
-// to the same bytes, every other one rejects the frame.
+// (reserved bytes come back as 0). On a frame with the right markers and
+// length, each message's own decoder, robowire::decode<M>, agrees with
+// osp::decode: the message it chose decodes to the same bytes, every other
+// one rejects the frame.
 #include <robowire/osp.hpp>
 
 #include <utility>
@@ -43,7 +44,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fuzz::check_text(f);
     FUZZ_CHECK(m.frame().has_value() == f.has_value());
     if (f) FUZZ_CHECK(*m.frame() == *f);  // the same DEV, CMD and P1..P4
-    check_alternatives(in, m, std::make_index_sequence<std::variant_size_v<osp::message>>{});
+    // Only on frames decode<osp::frame> accepts: on every input, the eleven
+    // decodes cut libFuzzer's speed to a third.
+    if (f) check_alternatives(in, m, std::make_index_sequence<std::variant_size_v<osp::message>>{});
     if (!m) {
         FUZZ_CHECK(m.error().offset <= size);
         return 0;
