@@ -55,6 +55,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::span<const std::uint8_t> adv(data + 1, split), scan(data + 1 + split, size - 1 - split);
     const auto r = bw::parse_advertisement(adv, scan);
     const auto a = robowire::ad::validate(adv), s = robowire::ad::validate(scan);
+    fuzz::check_access(r);
     FUZZ_CHECK(r.has_value() == (a.has_value() && s.has_value()));
     if (!r) {
         FUZZ_CHECK(r.error().code == robowire::errc::bad_length);

@@ -8,6 +8,7 @@ FUZZ_STRUCTURE_AWARE(robowire::buwizz3::command)
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::span<const std::uint8_t> in(data, size);
     const auto cmd = robowire::buwizz3::decode_command(in);
+    fuzz::check_text(cmd);
     if (!cmd) {
         FUZZ_CHECK(cmd.error().offset <= size);
         return 0;

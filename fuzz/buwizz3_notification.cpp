@@ -31,6 +31,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     namespace bw = robowire::buwizz3;
     const std::span<const std::uint8_t> in(data, size);
     const auto n = bw::decode_notification(in);
+    fuzz::check_text(n);
     if (!n) {
         FUZZ_CHECK(n.error().offset <= size);
         return 0;

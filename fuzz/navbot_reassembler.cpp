@@ -7,7 +7,8 @@
 //    `complete` for the message's command, the payload is the whole message:
 //    never a truncated one. A second reassembler, of 4 frames, gets the same
 //    frames: it completes the message only when it has at most 4 frames.
-// 3. The whole input, fragmented as one payload, reassembles to itself, and
+// 3. The whole input, fragmented as one payload (make_frames refuses more than
+//    max_payload bytes), reassembles to itself, and
 //    json_object() never accepts text that does not start with '{' and end with '}'.
 #include <robowire/navbot.hpp>
 
@@ -29,6 +30,7 @@ void arbitrary_frames(std::span<const std::uint8_t> in) {
         const auto before_size = small.payload().size();
         const bool before_progress = small.in_progress();
         const auto st = small.push(std::span<const std::uint8_t>(frame, len));
+        fuzz::check_text(st);
         FUZZ_CHECK(small.payload().size() <= 60 && small.payload().size() % 15 == 0);
         if (!st) {
             FUZZ_CHECK(st.error().offset < 20 || len != 20);
@@ -137,6 +139,11 @@ void message_with_traffic(std::span<const std::uint8_t> in) {
 }
 
 void fragment_and_json(std::span<const std::uint8_t> in) {
+    // More than max_payload bytes do not fit in the frames of one message.
+    const auto all = nb::make_frames(0x02, in);
+    fuzz::check_text(all);
+    FUZZ_CHECK(all.has_value() == (in.size() <= nb::max_payload));
+    if (!all) FUZZ_CHECK(all.error().code == robowire::errc::capacity_exceeded && all.error().offset == nb::max_payload);
     const auto payload = in.first(in.size() < nb::max_payload ? in.size() : nb::max_payload);
     const auto frames = nb::make_frames(0x02, payload);
     FUZZ_CHECK(frames.has_value());
@@ -151,7 +158,9 @@ void fragment_and_json(std::span<const std::uint8_t> in) {
     FUZZ_CHECK(fuzz::same_bytes(big.payload().first(payload.size()), payload));
 
     const std::string_view text(reinterpret_cast<const char*>(payload.data()), payload.size());
-    if (const auto j = nb::json_object(text)) {
+    const auto j = nb::json_object(text);
+    fuzz::check_throws(j);
+    if (j) {
         const auto first = text.find_first_not_of(" \t\r\n");
         const auto last = text.find_last_not_of(" \t\r\n");
         FUZZ_CHECK(first != std::string_view::npos && text[first] == '{' && text[last] == '}');
