@@ -45,6 +45,16 @@ osp_frames = ["FF AA 00 01 00 00 00 00 55 77", "FF AA 00 11 02 00 00 00 55 77", 
               "FF AA 03 01 0A 0B 0C 0D 55 77", "FF AA 02 14 05 00 00 00 55 77"]
 osp_streams = ["01 00 55 77 FF FF AA 01 02 03 04 05 06 07 08 FF AA 02 11 FF AA 00 00 55 77 FF AA 02 12 D2 04 00 00 55 77",
                "07 FF AA 02 11 12 FF AA 02 12 D2 04 00 00 55 77", "03 " + " ".join(osp_frames)]
+# core_types: an operation byte (modulo 12) and its operands
+core_types = ["00 01 00 02 00 03 00 04 00 05 00 06 00 07 00 08 00 09 00 0A 00 0B 00 0C 00 0D",  # push_back past capacity
+              "01 0F " + "AA " * 15 + "02 04 00 02 0F 00 03 05 03 0F 02 00 01",  # append too much, resize, clear, zeros
+              "04 0E " + "11 " * 14 + "04 03 01 02 03 05 03 01 02 03 05 02 01 02",  # from, comparisons
+              "06 0B 62 75 77 69 7A 7A 33 2D 72 65 64 06 04 6C 6F 77 21",  # text of 11 and of 4 characters
+              "08 80 FF 08 8A 8A 08 7F 00 09 FF 00 FF FF FF FF 00 09 10 11 FF FF FF FF 10 0A 02 0A 04 0A 06",
+              "0B FF FF FF FF FF FF FF FF 00 00 00 00 00 00 00 00 00 00 08 01 02 03 04 05 06 07 08",  # empty range
+              "0B 00 00 00 00 00 00 00 00 00 FF FF FF FF FF FF FF FF 00 08 01 02 03 04 05 06 07 08",  # 0..2^64-1
+              "07 02 01 06 08 09 42 75 57 69 7A 7A 33 00 00",  # AD structures, then padding
+              "07 02 01 06 09 FF 4E 05"]  # a length past the end
 roundtrip = ["00", "05 01 2C 01 00 00", "0A 01 FF 00 00 00 FF 00 00 00 FF 10 20 30 01 1F F0 08 55",
              "80 73 50 0A 14 1E 28 32 C8", "82 05 01 02 03 04 05", "11 7F C0 00 01"]
 
@@ -52,7 +62,7 @@ sets = {
     "buwizz3_command": buwizz3_commands, "buwizz3_notification": buwizz3_notifications,
     "buwizz3_advertisement": buwizz3_adv, "navbot_frame": navbot_frames,
     "navbot_reassembler": navbot_reassembly, "osp_decode": osp_frames, "osp_scanner": osp_streams,
-    "roundtrip_buwizz3": roundtrip, "roundtrip_navbot": roundtrip, "roundtrip_osp": roundtrip,
+    "core_types": core_types, "roundtrip_buwizz3": roundtrip, "roundtrip_navbot": roundtrip, "roundtrip_osp": roundtrip,
 }
 for name, vectors in sets.items():
     d = os.path.join("fuzz", "corpus", name)
