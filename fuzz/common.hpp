@@ -133,8 +133,12 @@ robowire::bytes<robowire::max_size_v<M>> without_reserved(std::span<const std::u
 
 // The structure-aware round trip: encode(m) either fails with a field error
 // inside the message, or decodes back to the same bytes (float bit patterns
-// included, since the comparison is on bytes).
-template <class Variant, class Decode>
+// included, since the comparison is on bytes). `floats::none`: the protocol's
+// messages have no float field, so that two of them compare equal exactly
+// when they encode alike (+0.0 == -0.0 encode differently); operator== is
+// checked too.
+enum class floats { some, none };
+template <floats F = floats::some, class Variant, class Decode>
 void round_trip(const Variant& m, Decode&& decode_any) {
     const auto wire = robowire::encode(m);
     check_text(wire);
@@ -147,17 +151,19 @@ void round_trip(const Variant& m, Decode&& decode_any) {
     }
     // encode_to writes the same bytes into a buffer of exactly their size, and
     // fails with buffer_too_small (offset: the size needed) on one byte less.
-    std::visit([&](const auto& alt) {
-        std::uint8_t buf[robowire::variant_max_size_v<Variant>] = {};
-        const std::span<std::uint8_t> out(buf, wire->size());
-        const auto n = robowire::encode_to(alt, out);
-        check_text(n);
-        FUZZ_CHECK(n.has_value() && *n == wire->size() && same_bytes(out, *wire));
-        const auto short_by_one = robowire::encode_to(alt, out.first(out.size() - 1));
-        check_text(short_by_one);
-        FUZZ_CHECK(!short_by_one && short_by_one.error().code == robowire::errc::buffer_too_small &&
-                   short_by_one.error().offset == wire->size());
-    }, m);
+    std::visit(
+        [&](const auto& alt) {
+            std::uint8_t buf[robowire::variant_max_size_v<Variant>] = {};
+            const std::span<std::uint8_t> out(buf, wire->size());
+            const auto n = robowire::encode_to(alt, out);
+            check_text(n);
+            FUZZ_CHECK(n.has_value() && *n == wire->size() && same_bytes(out, *wire));
+            const auto short_by_one = robowire::encode_to(alt, out.first(out.size() - 1));
+            check_text(short_by_one);
+            FUZZ_CHECK(!short_by_one && short_by_one.error().code == robowire::errc::buffer_too_small &&
+                       short_by_one.error().offset == wire->size());
+        },
+        m);
     const auto back = decode_any(std::span<const std::uint8_t>(wire->data(), wire->size()));
     check_text(back);
     FUZZ_CHECK(back.has_value());
@@ -165,6 +171,19 @@ void round_trip(const Variant& m, Decode&& decode_any) {
     const auto again = robowire::encode(*back);
     FUZZ_CHECK(again.has_value());
     FUZZ_CHECK(same_bytes(*again, *wire));
+    // Without floats, operator== agrees with the encoding: equal messages
+    // encode alike, so a frame one bit off (at a byte chosen by the frame)
+    // that decodes and encodes to other bytes is a message that compares unequal.
+    if constexpr (F == floats::none) {
+        unsigned sum = 0;
+        for (const auto b : *wire) sum += b;
+        auto off = *wire;
+        off[sum % off.size()] ^= static_cast<std::uint8_t>(1u << (sum / off.size() % 8));
+        const auto other = decode_any(std::span<const std::uint8_t>(off.data(), off.size()));
+        if (!other) return;
+        const auto other_wire = robowire::encode(*other);
+        if (other_wire && !same_bytes(*other_wire, *wire)) FUZZ_CHECK(!(*other == *back) && *other != *back);
+    }
 }
 
 }  // namespace fuzz
