@@ -118,7 +118,7 @@ template <std::size_t I, class Variant>
 ROBOWIRE_ALWAYS_INLINE constexpr auto& make_alternative(result<Variant>& r) noexcept {
     if constexpr (ROBOWIRE_OPTIMIZE_SIZE)
         return codec::emplace_alternative<I>(codec::unchecked_value(r));   // holds a value
-    else return *std::get_if<I>(&build_value(r, std::in_place_index<I>));  // r holds an error
+    else return *std::get_if<I>(&build_value(r, std::in_place_index<I>));  // r holds nothing yet
 }
 // Makes alternative I of r's variant and decodes `in` into it, in place.
 // Checked: fixed bytes and length checked already (see check_alternative).
@@ -132,10 +132,11 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r,
     if (e.code != errc::ok) r = e;
 }
 template <std::size_t KeyOffset, bool Checked, class Variant, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr void decode_index(result<Variant>& r, std::size_t index,
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_index(result<Variant>& r, std::size_t index,
                                                    std::span<const std::uint8_t> in,
                                                    std::index_sequence<I...>) noexcept {
-    (void)((index == I ? (decode_alternative<I, KeyOffset, Checked>(r, in), true) : false) || ...);
+    // false: no alternative has that index
+    return ((index == I ? (decode_alternative<I, KeyOffset, Checked>(r, in), true) : false) || ...);
 }
 
 // Input sizes (min, max) of each alternative, in flash: one length check for
@@ -191,22 +192,24 @@ struct smallest_alternative<std::variant<M...>> {
 template <class Variant, std::size_t KeyOffset>
 ROBOWIRE_SPEED_INLINE constexpr result<Variant> decode_variant_at(const std::uint8_t* data, std::size_t size) noexcept {
     const std::span<const std::uint8_t> in(data, size);
-    // An error until the decoded alternative is built in place (nothing cleared
-    // first); under ROBOWIRE_OPTIMIZE_SIZE the smallest alternative, replaced below.
+    // Set on every path below: the decoded alternative is built in place
+    // (nothing stored or cleared first); under ROBOWIRE_OPTIMIZE_SIZE it starts
+    // as the smallest alternative, replaced below.
     result<Variant> r = ROBOWIRE_OPTIMIZE_SIZE
                             ? result<Variant>{std::in_place, std::in_place_index<smallest_alternative<Variant>::value>}
-                            : result<Variant>{fail(errc::unknown_message, KeyOffset)};
+                            : result<Variant>{unset_result_t{}};
+    constexpr auto all = std::make_index_sequence<std::variant_size_v<Variant>>{};
     if (in.size() <= KeyOffset) {
         r = fail(errc::too_short, in.size());
-    } else if (const std::size_t index = index_of_key<Variant, KeyOffset>(in[KeyOffset]);
-               index == std::variant_size_v<Variant>) {
-        if constexpr (ROBOWIRE_OPTIMIZE_SIZE) r = fail(errc::unknown_message, KeyOffset);
     } else if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
-        constexpr auto all = std::make_index_sequence<std::variant_size_v<Variant>>{};
-        if (const error e = check_alternative<Variant, KeyOffset>(index, in, all); e.code != errc::ok) r = e;
+        const std::size_t index = index_of_key<Variant, KeyOffset>(in[KeyOffset]);
+        if (index == std::variant_size_v<Variant>) r = fail(errc::unknown_message, KeyOffset);
+        else if (const error e = check_alternative<Variant, KeyOffset>(index, in, all); e.code != errc::ok) r = e;
         else decode_index<KeyOffset, true>(r, index, in, all);
     } else {
-        decode_index<KeyOffset, false>(r, index, in, std::make_index_sequence<std::variant_size_v<Variant>>{});
+        // An unknown key is the jump table's default: one range check for both.
+        const std::size_t index = index_of_key<Variant, KeyOffset>(in[KeyOffset]);
+        if (!decode_index<KeyOffset, false>(r, index, in, all)) r = fail(errc::unknown_message, KeyOffset);
     }
     return r;
 }

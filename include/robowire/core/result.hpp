@@ -205,6 +205,10 @@ namespace detail {
 struct value_init_t {
     explicit value_init_t() = default;
 };
+// Tag of result's constructor that sets nothing (see there).
+struct unset_result_t {
+    explicit unset_result_t() = default;
+};
 }  // namespace detail
 // Building blocks for protocol headers (docs/extending.md): what the generic
 // codec does, for a protocol's own dispatchers and encoders.
@@ -243,6 +247,9 @@ public:
     // (less code than member by member for a large T, see detail::in_place_result).
     constexpr explicit result(detail::value_init_t) noexcept(std::is_nothrow_default_constructible_v<T>)
         : value_(cleared{}), ok_(true) {}
+    // Neither a value nor an error yet: for a codec that makes it one or the
+    // other on every path before it is read (no store before the branch).
+    constexpr explicit result(detail::unset_result_t) noexcept {}
     // A value-holding result whose value is T(arg).
     template <class A>
     constexpr result(std::in_place_t, const A& arg) noexcept(std::is_nothrow_constructible_v<T, const A&>)

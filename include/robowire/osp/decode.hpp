@@ -18,7 +18,7 @@ namespace robowire::osp {
 
 class decode_result;
 namespace impl {
-constexpr void set_frame(decode_result& d, const osp::frame& f) noexcept;
+constexpr osp::frame& frame_of(decode_result& d) noexcept;
 }  // namespace impl
 inline namespace ROBOWIRE_MODE_NAMESPACE {
 // Decodes one 10-byte frame (below). A template, so that nothing is
@@ -34,14 +34,17 @@ class decode_result : public result<message> {
 public:
     constexpr decode_result(result<message> r, std::optional<osp::frame> f) noexcept : result<message>(r), frame_(f) {}
     constexpr explicit decode_result(std::in_place_t) noexcept : result<message>(std::in_place) {}
+    // Neither a message nor an error yet (see result's constructor), no frame.
+    constexpr explicit decode_result(detail::unset_result_t u) noexcept : result<message>(u) {}
     using result<message>::operator=;
     constexpr const std::optional<osp::frame>& frame() const noexcept { return frame_; }
 
 private:
-    friend constexpr void impl::set_frame(decode_result& d, const osp::frame& f) noexcept;
+    friend constexpr osp::frame& impl::frame_of(decode_result& d) noexcept;
     std::optional<osp::frame> frame_;
 };
-constexpr void impl::set_frame(decode_result& d, const osp::frame& f) noexcept { d.frame_ = f; }
+// Makes d hold a frame and returns it, to be written in place.
+constexpr osp::frame& impl::frame_of(decode_result& d) noexcept { return d.frame_.emplace(); }
 
 static_assert(sizeof(frame) == 6 && std::is_trivially_copyable_v<frame>, "osp::frame: DEV, CMD, P1..P4, no padding");
 
@@ -107,7 +110,7 @@ constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
 // Fixed bytes checked by the frame already: makes the message and decodes its fields in place.
 template <std::size_t I>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_message(decode_result& d, std::span<const std::uint8_t> in) noexcept {
-    auto& m = codec::emplace_alternative<I>(codec::unchecked_value(d));
+    auto& m = *std::get_if<I>(&detail::build_value(d, std::in_place_index<I>));  // d holds nothing yet
     if (const error e = codec::decode_fields(m, in); e.code != errc::ok) d = e;
 }
 template <std::size_t... I>
@@ -147,17 +150,15 @@ namespace impl::inline ROBOWIRE_MODE_NAMESPACE {
 template <class Message>
 constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) noexcept {
     const std::span<const std::uint8_t> in(data, size);
-    decode_result d{std::in_place};
+    decode_result d{detail::unset_result_t{}};  // a message or an error on every path below
     if (const error e = check_frame(in)) {
         d = e;
         return d;
     }
     if (ROBOWIRE_OPTIMIZE_SIZE || std::is_constant_evaluated()) {
-        set_frame(d, osp::frame{in[2], in[3], {in[4], in[5], in[6], in[7]}});
-    } else {  // one wide copy, not six bytes
-        osp::frame f;
-        std::memcpy(&f, data + 2, sizeof f);
-        set_frame(d, f);
+        frame_of(d) = osp::frame{in[2], in[3], {in[4], in[5], in[6], in[7]}};
+    } else {  // one wide copy, not six bytes, straight into d
+        std::memcpy(&frame_of(d), data + 2, sizeof(osp::frame));
     }
     decode_by_key(d, static_cast<std::uint16_t>(in[2] << 8 | in[3]), in,
                   std::make_index_sequence<std::variant_size_v<Message>>{});
