@@ -8,6 +8,7 @@
 
 namespace {
 namespace bw = robowire::buwizz3;
+namespace hw = bench::hw;
 
 // ---------------------------------------------------------------- inputs
 constexpr std::array<std::uint8_t, 68> status68{
@@ -283,11 +284,13 @@ const bench::vector<std::span<const std::uint8_t>>& command_batch() {
     return batch;
 }
 
-// A careful user's dispatcher: tagged union, same checks.
+// A careful user's dispatcher: tagged union, the same checks and the same
+// error report (bench::hw), the LED blink bytes split into frequency and duty
+// as robowire does.
 struct hw_wakeup { bool enabled; std::uint32_t idle, sleep; };
 struct hw_motor { std::int8_t power[6]; std::uint8_t brake, lut; };
 struct hw_motor_ext { std::int32_t ref[4]; std::int8_t power[2]; std::uint8_t brake, lut; };
-struct hw_led { std::uint8_t n; std::uint8_t bytes[16]; };
+struct hw_led { bool has_colors, has_blink; std::uint8_t rgb[12]; struct { std::uint8_t frequency, duty; } blink[4]; };
 struct hw_uart { std::uint8_t channel; std::uint32_t baud; };
 struct hw_pid { std::uint8_t port; float f[8]; std::int8_t lim_out, db, boost; std::uint8_t mode; };
 struct hw_command {
@@ -309,71 +312,129 @@ struct hw_command {
     };
 };
 inline bool valid_function(std::uint8_t f) { return f == 0 || f == 0x10 || (f >= 0x14 && f <= 0x16); }
-bool hw_decode_command(const std::uint8_t* p, std::size_t n, hw_command& c) {
-    if (n == 0) return false;
+inline hw::error hw_power(const std::uint8_t* p, std::size_t n, std::size_t at, std::int8_t* out) {
+    for (std::size_t i = 0; i < n; ++i) {
+        if (p[at + i] == 0x80) return hw::fail(hw::value_out_of_range, at + i);
+        out[i] = static_cast<std::int8_t>(p[at + i]);
+    }
+    return hw::good;
+}
+inline hw::error hw_flags(const std::uint8_t* p, std::size_t at) {
+    if (p[at] & 0xC0) return hw::fail(hw::value_out_of_range, at);
+    if (p[at + 1] & 0xC0) return hw::fail(hw::value_out_of_range, at + 1);
+    return hw::good;
+}
+hw::error hw_decode_command(const std::uint8_t* p, std::size_t n, hw_command& c) {
+    if (n == 0) return hw::fail(hw::too_short, 0);
     c.kind = p[0];
     switch (p[0]) {
     case 0x20: {
-        if (n != 13) return false;
+        if (auto e = hw::length(n, 13); e != hw::good) return e;
         std::size_t len = 0;
         while (len < 12 && p[1 + len]) ++len;
-        for (std::size_t i = len; i < 12; ++i) if (p[1 + i]) return false;
+        for (std::size_t i = len; i < 12; ++i) if (p[1 + i]) return hw::fail(hw::bad_padding, 1 + i);
         std::memcpy(c.name, p + 1, 12);
         c.name[12] = 0;
-        return true;
+        return hw::good;
     }
     case 0x21:
-        if (n != 10 || p[1] > 1) return false;
+        if (auto e = hw::length(n, 10); e != hw::good) return e;
+        if (p[1] > 1) return hw::fail(hw::value_out_of_range, 1);
         c.wakeup = {p[1] != 0, static_cast<std::uint32_t>(rd32(p + 2)), static_cast<std::uint32_t>(rd32(p + 6))};
-        return c.wakeup.idle >= 10;
+        return c.wakeup.idle >= 10 ? hw::good : hw::fail(hw::value_out_of_range, 2);
     case 0x22:
-        if (n != 25) return false;
+        if (auto e = hw::length(n, 25); e != hw::good) return e;
         for (std::size_t i = 0; i < 6; ++i) c.factors[i] = rdf(p + 1 + 4 * i);
-        return true;
-    case 0x23: case 0xA1: case 0xAC: return n == 1;
+        return hw::good;
+    case 0x23: case 0xA1: case 0xAC: return hw::length(n, 1);
     case 0x30:
-        if (n != 9) return false;
-        for (std::size_t i = 0; i < 6; ++i) { if (p[1 + i] == 0x80) return false; c.motor.power[i] = static_cast<std::int8_t>(p[1 + i]); }
-        if ((p[7] | p[8]) & 0xC0) return false;
+        if (auto e = hw::length(n, 9); e != hw::good) return e;
+        if (auto e = hw_power(p, 6, 1, c.motor.power); e != hw::good) return e;
+        if (auto e = hw_flags(p, 7); e != hw::good) return e;
         c.motor.brake = p[7];
         c.motor.lut = p[8];
-        return true;
+        return hw::good;
     case 0x31:
-        if (n != 21) return false;
+        if (auto e = hw::length(n, 21); e != hw::good) return e;
         for (std::size_t i = 0; i < 4; ++i) c.motor_ext.ref[i] = rd32(p + 1 + 4 * i);
-        for (std::size_t i = 0; i < 2; ++i) { if (p[17 + i] == 0x80) return false; c.motor_ext.power[i] = static_cast<std::int8_t>(p[17 + i]); }
-        if ((p[19] | p[20]) & 0xC0) return false;
+        if (auto e = hw_power(p, 2, 17, c.motor_ext.power); e != hw::good) return e;
+        if (auto e = hw_flags(p, 19); e != hw::good) return e;
         c.motor_ext.brake = p[19];
         c.motor_ext.lut = p[20];
-        return true;
-    case 0x32: if (n != 2 || p[1] < 20) return false; c.one = p[1]; return true;
-    case 0x33: if (n != 13) return false; std::memcpy(c.ramps, p + 1, 12); return true;
-    case 0x34: if (n != 2 || p[1] == 255) return false; c.one = p[1]; return true;
-    case 0x35: if (n != 2) return false; c.one = p[1]; return true;
+        return hw::good;
+    case 0x32:
+        if (auto e = hw::length(n, 2); e != hw::good) return e;
+        if (p[1] < 20) return hw::fail(hw::value_out_of_range, 1);
+        c.one = p[1];
+        return hw::good;
+    case 0x33:
+        if (auto e = hw::length(n, 13); e != hw::good) return e;
+        std::memcpy(c.ramps, p + 1, 12);
+        return hw::good;
+    case 0x34:
+        if (auto e = hw::length(n, 2); e != hw::good) return e;
+        if (p[1] == 255) return hw::fail(hw::value_out_of_range, 1);
+        c.one = p[1];
+        return hw::good;
+    case 0x35:
+        if (auto e = hw::length(n, 2); e != hw::good) return e;
+        c.one = p[1];
+        return hw::good;
     case 0x36:
-        if (n != 1 && n != 13 && n != 17) return false;
-        c.led.n = static_cast<std::uint8_t>(n - 1);
-        std::memcpy(c.led.bytes, p + 1, n - 1);
-        return true;
-    case 0x37: if (n != 2 || (p[1] > 3 && (p[1] < 8 || p[1] > 11))) return false; c.one = p[1]; return true;
-    case 0x38: if (n != 7) return false; std::memcpy(c.limits, p + 1, 6); return true;
-    case 0x40: if (n != 7 || p[1] != 0x10) return false; c.uart = {p[2], static_cast<std::uint32_t>(rd32(p + 3))}; return true;
+        if (n != 1 && n != 13 && n != 17) return n > 17 ? hw::fail(hw::too_long, 17) : hw::fail(hw::bad_length, n);
+        c.led.has_colors = n > 1;
+        c.led.has_blink = n > 13;
+        if (n > 1) std::memcpy(c.led.rgb, p + 1, 12);
+        if (n > 13)
+            for (std::size_t i = 0; i < 4; ++i) {
+                c.led.blink[i].frequency = static_cast<std::uint8_t>(p[13 + i] >> 4);
+                c.led.blink[i].duty = p[13 + i] & 0x0F;
+            }
+        return hw::good;
+    case 0x37:
+        if (auto e = hw::length(n, 2); e != hw::good) return e;
+        if (p[1] > 3 && (p[1] < 8 || p[1] > 11)) return hw::fail(hw::invalid_enum, 1);
+        c.one = p[1];
+        return hw::good;
+    case 0x38:
+        if (auto e = hw::length(n, 7); e != hw::good) return e;
+        std::memcpy(c.limits, p + 1, 6);
+        return hw::good;
+    case 0x40:
+        if (n > 1 && p[1] != 0x10) return hw::fail(hw::bad_command, 1);
+        if (auto e = hw::length(n, 7); e != hw::good) return e;
+        c.uart = {p[2], static_cast<std::uint32_t>(rd32(p + 3))};
+        return hw::good;
     case 0x50:
-        if (n != 5) return false;
-        for (std::size_t i = 0; i < 4; ++i) { if (!valid_function(p[1 + i])) return false; c.functions[i] = p[1 + i]; }
-        return true;
-    case 0x51: if (n != 2 || p[1] > 4) return false; c.one = p[1]; return true;
-    case 0x52: if (n != 17) return false; for (std::size_t i = 0; i < 4; ++i) c.reference[i] = rd32(p + 1 + 4 * i); return true;
+        if (auto e = hw::length(n, 5); e != hw::good) return e;
+        for (std::size_t i = 0; i < 4; ++i) {
+            if (!valid_function(p[1 + i])) return hw::fail(hw::invalid_enum, 1 + i);
+            c.functions[i] = p[1 + i];
+        }
+        return hw::good;
+    case 0x51:
+        if (auto e = hw::length(n, 2); e != hw::good) return e;
+        if (p[1] > 4) return hw::fail(hw::value_out_of_range, 1);
+        c.one = p[1];
+        return hw::good;
+    case 0x52:
+        if (auto e = hw::length(n, 17); e != hw::good) return e;
+        for (std::size_t i = 0; i < 4; ++i) c.reference[i] = rd32(p + 1 + 4 * i);
+        return hw::good;
     case 0x53:
-        if (n != 38 || p[1] > 3) return false;
+        if (auto e = hw::length(n, 38); e != hw::good) return e;
+        if (p[1] > 3) return hw::fail(hw::value_out_of_range, 1);
         c.pid.port = p[1];
         for (std::size_t i = 0; i < 8; ++i) c.pid.f[i] = rdf(p + 2 + 4 * i);
         c.pid.lim_out = static_cast<std::int8_t>(p[34]);
         c.pid.db = static_cast<std::int8_t>(p[35]);
         c.pid.boost = static_cast<std::int8_t>(p[36]);
         c.pid.mode = p[37];
-        return c.pid.lim_out >= 1 && c.pid.db >= 0 && c.pid.boost >= 0 && valid_function(p[37]);
-    default: return false;
+        if (c.pid.lim_out < 1) return hw::fail(hw::value_out_of_range, 34);
+        if (c.pid.db < 0) return hw::fail(hw::value_out_of_range, 35);
+        if (c.pid.boost < 0) return hw::fail(hw::value_out_of_range, 36);
+        return valid_function(p[37]) ? hw::good : hw::fail(hw::invalid_enum, 37);
+    default: return hw::fail(hw::unknown_message, 0);
     }
 }
 
@@ -393,8 +454,7 @@ void commands_handwritten(benchmark::State& state) {
     bench::in_memory(c);
     for (auto _ : bench::measure(state)) {
         for (const auto& item : batch) {
-            bool ok = hw_decode_command(item.data(), item.size(), c);
-            benchmark::DoNotOptimize(ok);
+            bench::consume(hw_decode_command(item.data(), item.size(), c));
             benchmark::ClobberMemory();  // the escaped output is written
         }
     }
