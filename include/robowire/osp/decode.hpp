@@ -18,6 +18,7 @@ namespace robowire::osp {
 
 class decode_result;
 namespace impl {
+constexpr void set_frame(decode_result& d, const osp::frame& f) noexcept;
 constexpr osp::frame& frame_of(decode_result& d) noexcept;
 }  // namespace impl
 inline namespace ROBOWIRE_MODE_NAMESPACE {
@@ -40,9 +41,11 @@ public:
     constexpr const std::optional<osp::frame>& frame() const noexcept { return frame_; }
 
 private:
+    friend constexpr void impl::set_frame(decode_result& d, const osp::frame& f) noexcept;
     friend constexpr osp::frame& impl::frame_of(decode_result& d) noexcept;
     std::optional<osp::frame> frame_;
 };
+constexpr void impl::set_frame(decode_result& d, const osp::frame& f) noexcept { d.frame_ = f; }
 // Makes d hold a frame and returns it, to be written in place.
 constexpr osp::frame& impl::frame_of(decode_result& d) noexcept { return d.frame_.emplace(); }
 
@@ -110,7 +113,8 @@ constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
 // Fixed bytes checked by the frame already: makes the message and decodes its fields in place.
 template <std::size_t I>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_message(decode_result& d, std::span<const std::uint8_t> in) noexcept {
-    auto& m = *std::get_if<I>(&detail::build_value(d, std::in_place_index<I>));  // d holds nothing yet
+    auto& m = ROBOWIRE_OPTIMIZE_SIZE ? codec::emplace_alternative<I>(codec::unchecked_value(d))
+                                     : *std::get_if<I>(&detail::build_value(d, std::in_place_index<I>));  // d unset
     if (const error e = codec::decode_fields(m, in); e.code != errc::ok) d = e;
 }
 template <std::size_t... I>
@@ -150,13 +154,15 @@ namespace impl::inline ROBOWIRE_MODE_NAMESPACE {
 template <class Message>
 constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) noexcept {
     const std::span<const std::uint8_t> in(data, size);
-    decode_result d{detail::unset_result_t{}};  // a message or an error on every path below
+    // A message or an error on every path below (under ROBOWIRE_OPTIMIZE_SIZE: a
+    // default message first, less code).
+    decode_result d = ROBOWIRE_OPTIMIZE_SIZE ? decode_result{std::in_place} : decode_result{detail::unset_result_t{}};
     if (const error e = check_frame(in)) {
         d = e;
         return d;
     }
     if (ROBOWIRE_OPTIMIZE_SIZE || std::is_constant_evaluated()) {
-        frame_of(d) = osp::frame{in[2], in[3], {in[4], in[5], in[6], in[7]}};
+        set_frame(d, osp::frame{in[2], in[3], {in[4], in[5], in[6], in[7]}});
     } else {  // one wide copy, not six bytes, straight into d
         std::memcpy(&frame_of(d), data + 2, sizeof(osp::frame));
     }
