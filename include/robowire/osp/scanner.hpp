@@ -32,8 +32,8 @@ public:
     constexpr void feed(std::span<const std::uint8_t> chunk, OnFrame&& on_frame) {
         const std::uint8_t* p = chunk.data();
         const std::size_t n = chunk.size();
+        if (!ROBOWIRE_OPTIMIZE_SIZE && n == 1) return push_byte(p[0], on_frame);  // one test, no loop to enter
         if (ROBOWIRE_OPTIMIZE_SIZE || n < frame_size) {  // short chunks (a UART's few bytes per read): byte by byte
-            if (!ROBOWIRE_OPTIMIZE_SIZE && n == 1) return push_byte(p[0], on_frame);  // no loop to enter
             for (std::size_t k = 0; k < n; ++k) push_byte(p[k], on_frame);
             return;
         }
