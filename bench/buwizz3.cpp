@@ -1,7 +1,9 @@
 // BuWizz3: status decode, command encode, decode_command over a mixed batch.
 // Baselines: memcpy of the same bytes (the floor) and the hand-written codec
 // a careful user would write (shifts and memcpy into a plain struct, with the
-// same length, command and range checks).
+// same length, command and range checks in robowire's order, and the same
+// error report: bench::hw, an error code and its byte offset). The encoders
+// check every field, then the buffer's size, before writing any byte.
 #include <robowire/buwizz3.hpp>
 
 #include "common.hpp"
@@ -35,6 +37,7 @@ struct hw_status {
     bool has_pid;
     float process_value, error, output;
     std::int8_t integrator, motor_output;
+    std::uint8_t ignored_trailing_bytes;  // after the 68 known bytes (up to 129)
 };
 inline std::int16_t rd16(const std::uint8_t* p) { return static_cast<std::int16_t>(p[0] | p[1] << 8); }
 inline std::int32_t rd32(const std::uint8_t* p) {
@@ -42,15 +45,16 @@ inline std::int32_t rd32(const std::uint8_t* p) {
                                      static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24);
 }
 inline float rdf(const std::uint8_t* p) { float f; std::memcpy(&f, p, 4); return f; }
-inline void wr32(std::uint8_t* p, std::int32_t v) {
-    const auto u = static_cast<std::uint32_t>(v);
-    p[0] = static_cast<std::uint8_t>(u); p[1] = static_cast<std::uint8_t>(u >> 8);
-    p[2] = static_cast<std::uint8_t>(u >> 16); p[3] = static_cast<std::uint8_t>(u >> 24);
-}
 inline void wrf(std::uint8_t* p, float f) { std::memcpy(p, &f, 4); }
+inline bool valid_function(std::uint8_t f) { return f == 0 || f == 0x10 || (f >= 0x14 && f <= 0x16); }
 
-bool hw_decode_status(const std::uint8_t* p, std::size_t n, hw_status& s) {
-    if (n < 54 || (n > 54 && n < 68) || n > 129 || p[0] != 0x01) return false;
+// robowire's order: the command byte (if there), the length (54..129), then a
+// truncated PID block (55..67 bytes).
+hw::error hw_decode_status(const std::uint8_t* p, std::size_t n, hw_status& s) {
+    if (n > 0 && p[0] != 0x01) return hw::fail(hw::bad_command, 0);
+    if (n < 54) return hw::fail(hw::too_short, n);
+    if (n > 129) return hw::fail(hw::too_long, 129);
+    if (n > 54 && n < 68) return hw::fail(hw::bad_length, 54);
     s.flags = p[1];
     s.battery = p[2];
     std::memcpy(s.current, p + 3, 6);
@@ -72,7 +76,8 @@ bool hw_decode_status(const std::uint8_t* p, std::size_t n, hw_status& s) {
         s.integrator = static_cast<std::int8_t>(p[66]);
         s.motor_output = static_cast<std::int8_t>(p[67]);
     }
-    return true;
+    s.ignored_trailing_bytes = static_cast<std::uint8_t>(n > 68 ? n - 68 : 0);
+    return hw::good;
 }
 
 template <std::size_t N>
@@ -107,8 +112,7 @@ void status_decode_handwritten(benchmark::State& state) {
     bench::in_memory(s);
     for (auto _ : bench::measure(state)) {
         for (const auto& item : in) {
-            bool ok = hw_decode_status(item.data(), N, s);
-            benchmark::DoNotOptimize(ok);
+            bench::consume(hw_decode_status(item.data(), N, s));
             benchmark::ClobberMemory();  // the escaped output is written
         }
     }
@@ -159,42 +163,57 @@ bench::vector<bw::set_pid_parameters> pid_inputs() {
     return v;
 }
 
-bool hw_encode_motor(const bw::set_motor_data& m, std::uint8_t* out) {
+// The port flags: 6 bits each; one compare on the good path.
+inline hw::error hw_check_flags(std::uint8_t brake, std::uint8_t lut, std::size_t at) {
+    if ((brake | lut) <= 0x3F) return hw::good;
+    return hw::fail(hw::value_out_of_range, brake > 0x3F ? at : at + 1);
+}
+hw::error hw_encode_motor(const bw::set_motor_data& m, std::uint8_t* out, std::size_t size) {
+    for (std::size_t i = 0; i < 6; ++i)
+        if (m.power[i] == -128) return hw::fail(hw::value_out_of_range, 1 + i);
+    if (auto e = hw_check_flags(m.brake_flags, m.lut_disable_flags, 7); e != hw::good) return e;
+    if (size < 9) return hw::fail(hw::buffer_too_small, 9);
     out[0] = 0x30;
-    for (std::size_t i = 0; i < 6; ++i) {
-        if (m.power[i] == -128) return false;
-        out[1 + i] = static_cast<std::uint8_t>(m.power[i]);
-    }
-    if ((m.brake_flags | m.lut_disable_flags) & 0xC0) return false;
+    std::memcpy(out + 1, m.power.data(), 6);
     out[7] = m.brake_flags;
     out[8] = m.lut_disable_flags;
-    return true;
+    return hw::good;
 }
-bool hw_encode_motor_ext(const bw::set_motor_data_extended& m, std::uint8_t* out) {
+hw::error hw_encode_motor_ext(const bw::set_motor_data_extended& m, std::uint8_t* out, std::size_t size) {
+    for (std::size_t i = 0; i < 2; ++i)
+        if (m.power[i] == -128) return hw::fail(hw::value_out_of_range, 17 + i);
+    if (auto e = hw_check_flags(m.brake_flags, m.lut_disable_flags, 19); e != hw::good) return e;
+    if (size < 21) return hw::fail(hw::buffer_too_small, 21);
     out[0] = 0x31;
-    for (std::size_t i = 0; i < 4; ++i) wr32(out + 1 + 4 * i, m.reference[i]);
-    for (std::size_t i = 0; i < 2; ++i) {
-        if (m.power[i] == -128) return false;
-        out[17 + i] = static_cast<std::uint8_t>(m.power[i]);
-    }
-    if ((m.brake_flags | m.lut_disable_flags) & 0xC0) return false;
+    std::memcpy(out + 1, m.reference.data(), 16);  // little-endian host (as rdf and wrf)
+    std::memcpy(out + 17, m.power.data(), 2);
     out[19] = m.brake_flags;
     out[20] = m.lut_disable_flags;
-    return true;
+    return hw::good;
 }
-bool hw_encode_pid(const bw::set_pid_parameters& m, std::uint8_t* out) {
-    if (m.port > 3 || m.lim_out < 1 || m.deadband_out < 0 || m.deadband_out_boost < 0) return false;
+hw::error hw_encode_pid(const bw::set_pid_parameters& m, std::uint8_t* out, std::size_t size) {
     const auto mode = static_cast<std::uint8_t>(m.mode);
-    if (mode != 0x00 && mode != 0x10 && (mode < 0x14 || mode > 0x16)) return false;
+    if (m.port > 3) return hw::fail(hw::value_out_of_range, 1);
+    if (m.lim_out < 1) return hw::fail(hw::value_out_of_range, 34);
+    if (m.deadband_out < 0) return hw::fail(hw::value_out_of_range, 35);
+    if (m.deadband_out_boost < 0) return hw::fail(hw::value_out_of_range, 36);
+    if (!valid_function(mode)) return hw::fail(hw::invalid_enum, 37);
+    if (size < 38) return hw::fail(hw::buffer_too_small, 38);
     out[0] = 0x53;
     out[1] = m.port;
-    const float f[8] = {m.out_lp, m.d_lp, m.speed_lp, m.kp, m.ki, m.kd, m.lim_i, m.reference_rate_limit};
-    for (std::size_t i = 0; i < 8; ++i) wrf(out + 2 + 4 * i, f[i]);
+    wrf(out + 2, m.out_lp);
+    wrf(out + 6, m.d_lp);
+    wrf(out + 10, m.speed_lp);
+    wrf(out + 14, m.kp);
+    wrf(out + 18, m.ki);
+    wrf(out + 22, m.kd);
+    wrf(out + 26, m.lim_i);
+    wrf(out + 30, m.reference_rate_limit);
     out[34] = static_cast<std::uint8_t>(m.lim_out);
     out[35] = static_cast<std::uint8_t>(m.deadband_out);
     out[36] = static_cast<std::uint8_t>(m.deadband_out_boost);
     out[37] = mode;
-    return true;
+    return hw::good;
 }
 
 template <class M, class Make>
@@ -227,8 +246,7 @@ void encode_handwritten(benchmark::State& state, Make make, Enc enc) {
     alignas(64) std::array<std::uint8_t, 64> out{};
     for (auto _ : bench::measure(state)) {
         for (const auto& item : in) {
-            bool ok = enc(item, out.data());
-            benchmark::DoNotOptimize(ok);
+            bench::consume(enc(item, out.data(), out.size()));
             benchmark::DoNotOptimize(out);
         }
     }
@@ -311,7 +329,6 @@ struct hw_command {
         hw_pid pid;
     };
 };
-inline bool valid_function(std::uint8_t f) { return f == 0 || f == 0x10 || (f >= 0x14 && f <= 0x16); }
 inline hw::error hw_power(const std::uint8_t* p, std::size_t n, std::size_t at, std::int8_t* out) {
     for (std::size_t i = 0; i < n; ++i) {
         if (p[at + i] == 0x80) return hw::fail(hw::value_out_of_range, at + i);

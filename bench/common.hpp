@@ -72,7 +72,8 @@ namespace hw {
 enum errc : std::uint8_t {
     ok = 0, too_short = 1, too_long = 2, bad_length = 3, bad_header = 4, bad_trailer = 5, bad_command = 6,
     bad_device = 7, unknown_message = 8, value_out_of_range = 9, invalid_enum = 10, bad_padding = 11,
-    reserved_not_zero = 12, missing_field = 13, buffer_too_small = 14
+    reserved_not_zero = 12, missing_field = 13, buffer_too_small = 14, capacity_exceeded = 15, bad_sequence = 16,
+    command_changed = 17, bad_json = 18
 };
 using error = std::uint16_t;
 inline constexpr error good = 0;

@@ -1,4 +1,6 @@
-// Core primitives: little-endian loads vs memcpy, hex formatting vs a plain loop.
+// Core primitives: little-endian loads vs memcpy, hex formatting vs a plain
+// loop (which, as robowire::to_hex, checks that the text fits the caller's
+// buffer: bench::hw's buffer_too_small at the size it needs).
 #include <robowire/core.hpp>
 
 #include "common.hpp"
@@ -63,21 +65,25 @@ void hex_robowire(benchmark::State& state) {
     }
     state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * 68);
 }
+// Upper-case hex with a space between bytes; the size check of robowire::to_hex.
+bench::hw::error hw_to_hex(const std::uint8_t* p, std::size_t n, char* out, std::size_t size) {
+    static const char digits[] = "0123456789ABCDEF";
+    const std::size_t need = n ? 3 * n - 1 : 0;
+    if (need > size) return bench::hw::fail(bench::hw::buffer_too_small, need);
+    for (std::size_t k = 0; k < n; ++k) {
+        if (k) *out++ = ' ';
+        *out++ = digits[p[k] >> 4];
+        *out++ = digits[p[k] & 15];
+    }
+    return bench::hw::good;
+}
 void hex_handwritten(benchmark::State& state) {
     const auto buf = random_bytes(68 * bench::variants);
     std::array<char, 3 * 68> out{};
     bench::in_memory(out);
-    static const char digits[] = "0123456789ABCDEF";
     std::size_t i = 0;
     for (auto _ : bench::measure(state)) {
-        const std::uint8_t* p = buf.data() + 68 * (i++ % bench::variants);
-        char* o = out.data();
-        for (std::size_t k = 0; k < 68; ++k) {
-            if (k) *o++ = ' ';
-            *o++ = digits[p[k] >> 4];
-            *o++ = digits[p[k] & 15];
-        }
-        benchmark::DoNotOptimize(o);
+        bench::consume(hw_to_hex(buf.data() + 68 * (i++ % bench::variants), 68, out.data(), out.size()));
         benchmark::ClobberMemory();
     }
     state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * 68);

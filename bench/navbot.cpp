@@ -1,5 +1,7 @@
 // NAVBOT: maneuver encode/decode; fragment + reassemble a 200-byte JSON payload.
-// Baseline: the hand-written code a careful user would write.
+// Baseline: the hand-written code a careful user would write, with the same
+// checks in robowire's order and the same error report (bench::hw: an error
+// code and its byte offset); the encoder checks every field before it writes.
 #include <robowire/navbot.hpp>
 
 #include <algorithm>
@@ -41,14 +43,20 @@ bench::vector<std::array<std::uint8_t, 20>> maneuver_frames() {
     return v;
 }
 
+namespace hw = bench::hw;
 bool in(int v, int lo, int hi) { return v >= lo && v <= hi; }
-bool hw_encode(const nb::maneuver& m, std::uint8_t* out) {
-    if (!in(m.roll, -100, 100) || m.height > 100 || !in(m.pitch, -100, 100) || !in(m.yaw, -100, 100) ||
-        static_cast<int>(m.switch_a) > 2 || static_cast<int>(m.switch_b) > 1 || static_cast<int>(m.switch_c) > 1 ||
-        static_cast<int>(m.switch_d) > 2 || !in(m.ball_x, -5, 5) || !in(m.ball_y, -5, 5))
-        return false;
-    std::memset(out, 0, 20);
-    out[0] = 0x55; out[1] = 0xAA; out[2] = 0x10;
+hw::error hw_encode(const nb::maneuver& m, std::uint8_t* out) {
+    if (!in(m.roll, -100, 100)) return hw::fail(hw::value_out_of_range, 5);
+    if (m.height > 100) return hw::fail(hw::value_out_of_range, 6);
+    if (!in(m.pitch, -100, 100)) return hw::fail(hw::value_out_of_range, 7);
+    if (!in(m.yaw, -100, 100)) return hw::fail(hw::value_out_of_range, 8);
+    if (static_cast<std::uint8_t>(m.switch_a) > 2) return hw::fail(hw::invalid_enum, 9);
+    if (static_cast<std::uint8_t>(m.switch_b) > 1) return hw::fail(hw::invalid_enum, 10);
+    if (static_cast<std::uint8_t>(m.switch_c) > 1) return hw::fail(hw::invalid_enum, 11);
+    if (static_cast<std::uint8_t>(m.switch_d) > 2) return hw::fail(hw::invalid_enum, 12);
+    if (!in(m.ball_x, -5, 5)) return hw::fail(hw::value_out_of_range, 13);
+    if (!in(m.ball_y, -5, 5)) return hw::fail(hw::value_out_of_range, 14);
+    out[0] = 0x55; out[1] = 0xAA; out[2] = 0x10; out[3] = 0; out[4] = 0;
     out[5] = static_cast<std::uint8_t>(m.roll);
     out[6] = m.height;
     out[7] = static_cast<std::uint8_t>(m.pitch);
@@ -59,17 +67,31 @@ bool hw_encode(const nb::maneuver& m, std::uint8_t* out) {
     out[12] = static_cast<std::uint8_t>(m.switch_d);
     out[13] = static_cast<std::uint8_t>(m.ball_x);
     out[14] = static_cast<std::uint8_t>(m.ball_y);
-    return true;
+    std::memset(out + 15, 0, 5);  // reserved
+    return hw::good;
 }
-bool hw_decode(const std::uint8_t* p, std::size_t n, nb::maneuver& m) {
-    if (n != 20 || p[0] != 0x55 || p[1] != 0xAA || p[2] != 0x10 || p[3] != 0) return false;
+// robowire's order: the fixed bytes that are there (header, command, and
+// remaining = 0, a bad_sequence), the length, then the fields.
+hw::error hw_decode(const std::uint8_t* p, std::size_t n, nb::maneuver& m) {
+    if (n > 0 && p[0] != 0x55) return hw::fail(hw::bad_header, 0);
+    if (n > 1 && p[1] != 0xAA) return hw::fail(hw::bad_header, 1);
+    if (n > 2 && p[2] != 0x10) return hw::fail(hw::bad_command, 2);
+    if (n > 3 && p[3] != 0) return hw::fail(hw::bad_sequence, 3);
+    if (auto e = hw::length(n, 20); e != hw::good) return e;
     const auto s8 = [&](int i) { return static_cast<std::int8_t>(p[i]); };
-    if (!in(s8(5), -100, 100) || p[6] > 100 || !in(s8(7), -100, 100) || !in(s8(8), -100, 100) || p[9] > 2 ||
-        p[10] > 1 || p[11] > 1 || p[12] > 2 || !in(s8(13), -5, 5) || !in(s8(14), -5, 5))
-        return false;
+    if (!in(s8(5), -100, 100)) return hw::fail(hw::value_out_of_range, 5);
+    if (p[6] > 100) return hw::fail(hw::value_out_of_range, 6);
+    if (!in(s8(7), -100, 100)) return hw::fail(hw::value_out_of_range, 7);
+    if (!in(s8(8), -100, 100)) return hw::fail(hw::value_out_of_range, 8);
+    if (p[9] > 2) return hw::fail(hw::invalid_enum, 9);
+    if (p[10] > 1) return hw::fail(hw::invalid_enum, 10);
+    if (p[11] > 1) return hw::fail(hw::invalid_enum, 11);
+    if (p[12] > 2) return hw::fail(hw::invalid_enum, 12);
+    if (!in(s8(13), -5, 5)) return hw::fail(hw::value_out_of_range, 13);
+    if (!in(s8(14), -5, 5)) return hw::fail(hw::value_out_of_range, 14);
     m = {s8(5), p[6], s8(7), s8(8), static_cast<nb::switch_a>(p[9]), static_cast<nb::switch_b>(p[10]),
          static_cast<nb::switch_c>(p[11]), static_cast<nb::switch_d>(p[12]), s8(13), s8(14)};
-    return true;
+    return hw::good;
 }
 
 void encode_robowire(benchmark::State& state) {
@@ -87,8 +109,7 @@ void encode_handwritten(benchmark::State& state) {
     alignas(64) std::array<std::uint8_t, 20> out{};
     for (auto _ : bench::measure(state)) {
         for (const auto& item : v) {
-            bool ok = hw_encode(item, out.data());
-            benchmark::DoNotOptimize(ok);
+            bench::consume(hw_encode(item, out.data()));
             benchmark::DoNotOptimize(out);
         }
     }
@@ -110,8 +131,7 @@ void decode_handwritten(benchmark::State& state) {
     bench::in_memory(m);
     for (auto _ : bench::measure(state)) {
         for (const auto& item : v) {
-            bool ok = hw_decode(item.data(), 20, m);
-            benchmark::DoNotOptimize(ok);
+            bench::consume(hw_decode(item.data(), 20, m));
             benchmark::ClobberMemory();  // the escaped output is written
         }
     }

@@ -1,6 +1,8 @@
 // OSP: per-message decode and dispatch; scanner throughput on clean streams,
 // 30 % noise and pure noise, fed in 1-byte, 64-byte and 4 KiB chunks.
-// Baselines: hand-written decoders; a byte-at-a-time state machine of the
+// Baselines: hand-written decoders (the same checks in robowire's order, the
+// same error report: bench::hw, an error code and its byte offset); a
+// byte-at-a-time state machine of the
 // usual kind (as MAVLink-style parsers work); memchr for start bytes (floor).
 #include <robowire/osp.hpp>
 
@@ -30,26 +32,39 @@ bench::vector<frame10> voltage_frames() {
     return v;
 }
 
-bool hw_voltage(const std::uint8_t* p, std::size_t n, std::int16_t& cv) {
-    if (n != 10 || p[0] != 0xFF || p[1] != 0xAA || p[2] != 2 || p[3] != 0x12 || p[8] != 0x55 || p[9] != 0x77) return false;
+namespace hw = bench::hw;
+// robowire's order: the fixed bytes that are there (markers, DEV, CMD, end
+// markers, by offset), then the length.
+hw::error hw_voltage(const std::uint8_t* p, std::size_t n, std::int16_t& cv) {
+    if (n > 0 && p[0] != 0xFF) return hw::fail(hw::bad_header, 0);
+    if (n > 1 && p[1] != 0xAA) return hw::fail(hw::bad_header, 1);
+    if (n > 2 && p[2] != 0x02) return hw::fail(hw::bad_device, 2);
+    if (n > 3 && p[3] != 0x12) return hw::fail(hw::bad_command, 3);
+    if (n > 8 && p[8] != 0x55) return hw::fail(hw::bad_trailer, 8);
+    if (n > 9 && p[9] != 0x77) return hw::fail(hw::bad_trailer, 9);
+    if (auto e = hw::length(n, 10); e != hw::good) return e;
     cv = static_cast<std::int16_t>(p[4] | p[5] << 8);
-    return true;
+    return hw::good;
 }
 // The message, and the frame's DEV, CMD and P1..P4 as osp::decode keeps
-// them (its frame(), also for unknown messages).
+// them (its frame(), also for unknown messages and bad fields).
 struct hw_msg { std::uint8_t dev, cmd, p[4]; std::uint16_t a; std::uint8_t b; };
-bool hw_decode_any(const std::uint8_t* p, std::size_t n, hw_msg& m) {
-    if (n != 10 || p[0] != 0xFF || p[1] != 0xAA || p[8] != 0x55 || p[9] != 0x77) return false;
+hw::error hw_decode_any(const std::uint8_t* p, std::size_t n, hw_msg& m) {
+    if (n > 0 && p[0] != 0xFF) return hw::fail(hw::bad_header, 0);
+    if (n > 1 && p[1] != 0xAA) return hw::fail(hw::bad_header, 1);
+    if (n > 8 && p[8] != 0x55) return hw::fail(hw::bad_trailer, 8);
+    if (n > 9 && p[9] != 0x77) return hw::fail(hw::bad_trailer, 9);
+    if (auto e = hw::length(n, 10); e != hw::good) return e;
     m.dev = p[2];
     m.cmd = p[3];
     std::memcpy(m.p, p + 4, 4);
     switch (p[2] << 8 | p[3]) {
-    case 0x0001: case 0x0201: case 0x0202: case 0x0203: case 0x0204: return true;
-    case 0x0011: m.b = p[4]; return p[4] <= 3;
-    case 0x0102: m.b = p[4]; m.a = static_cast<std::uint16_t>(p[5] | p[6] << 8); return true;
-    case 0x0211: case 0x0212: case 0x0213: m.a = static_cast<std::uint16_t>(p[4] | p[5] << 8); return true;
-    case 0x0214: m.b = p[4]; m.a = p[5]; return p[4] <= 4;
-    default: return false;
+    case 0x0001: case 0x0201: case 0x0202: case 0x0203: case 0x0204: return hw::good;
+    case 0x0011: m.b = p[4]; return p[4] <= 3 ? hw::good : hw::fail(hw::invalid_enum, 4);
+    case 0x0102: m.b = p[4]; m.a = static_cast<std::uint16_t>(p[5] | p[6] << 8); return hw::good;
+    case 0x0211: case 0x0212: case 0x0213: m.a = static_cast<std::uint16_t>(p[4] | p[5] << 8); return hw::good;
+    case 0x0214: m.b = p[4]; m.a = p[5]; return p[4] <= 4 ? hw::good : hw::fail(hw::invalid_enum, 4);
+    default: return hw::fail(hw::unknown_message, 2);
     }
 }
 
@@ -68,8 +83,7 @@ void voltage_handwritten(benchmark::State& state) {
     std::int16_t cv = 0;
     for (auto _ : bench::measure(state)) {
         for (const auto& item : v) {
-            bool ok = hw_voltage(item.data(), 10, cv);
-            benchmark::DoNotOptimize(ok);
+            bench::consume(hw_voltage(item.data(), 10, cv));
             benchmark::DoNotOptimize(cv);
         }
     }
@@ -91,8 +105,7 @@ void dispatch_handwritten(benchmark::State& state) {
     bench::in_memory(m);
     for (auto _ : bench::measure(state)) {
         for (const auto& item : v) {
-            bool ok = hw_decode_any(item.data(), 10, m);
-            benchmark::DoNotOptimize(ok);
+            bench::consume(hw_decode_any(item.data(), 10, m));
             benchmark::ClobberMemory();  // the escaped output is written
         }
     }
