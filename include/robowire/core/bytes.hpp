@@ -166,13 +166,17 @@ template <std::size_t N, std::size_t M>
     constexpr std::string_view digits = "0123456789ABCDEF";
     const std::size_t need = hex_size(in.size(), separator);
     if (need > out.size()) return fail(errc::buffer_too_small, need);
-    std::size_t o = 0;
-    for (std::size_t i = 0; i < in.size(); ++i) {
-        if (i && separator) out[o++] = separator;
-        out[o++] = digits[in[i] >> 4];
-        out[o++] = digits[in[i] & 0x0F];
+    char* o = out.data();
+    const auto put = [&](std::uint8_t b) {
+        *o++ = digits[b >> 4];
+        *o++ = digits[b & 0x0F];
+    };
+    if (!in.empty()) put(in[0]);
+    for (std::size_t i = 1; i < in.size(); ++i) {  // the first byte apart: no test for it in the loop
+        if (separator) *o++ = separator;
+        put(in[i]);
     }
-    return o;
+    return static_cast<std::size_t>(o - out.data());
 }
 
 // Parses hex in the usual spellings: "01 5C", "015C", "0x01,0x5C", "01-5C",
