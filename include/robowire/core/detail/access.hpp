@@ -68,23 +68,25 @@ constexpr bool encode_in_loop() noexcept {
 }
 }  // namespace ROBOWIRE_MODE_NAMESPACE
 
-// An array of at least 4 one-byte integers whose wire bytes are their memory
-// bytes: stored whole once checked (one memcpy at run time).
+// An array of at least 2 one-byte integers whose wire bytes are their memory
+// bytes: stored whole once checked (one copy at run time, not under
+// ROBOWIRE_OPTIMIZE_SIZE).
 template <class M, std::size_t I>
 inline constexpr bool byte_array_v = [] {
     using F = field_t<M, I>;
     using E = typename F::element_type;
-    if constexpr (!F::is_array || F::count < 4 || std::is_enum_v<E> || std::is_same_v<E, bool> || sizeof(E) != 1 ||
+    if constexpr (!F::is_array || F::count < 2 || std::is_enum_v<E> || std::is_same_v<E, bool> || sizeof(E) != 1 ||
                   !std::is_integral_v<E>) {
         return false;
     } else {
         return F::kind == wire_kind::u8 || F::kind == wire_kind::i8;
     }
 }();
-// Such an array that needs no validation: also decoded whole.
+// Such an array of at least 4 that needs no validation: also decoded whole,
+// and stored whole under ROBOWIRE_OPTIMIZE_SIZE too.
 template <class M, std::size_t I>
 inline constexpr bool plain_byte_array_v = [] {
-    if constexpr (!byte_array_v<M, I>) {
+    if constexpr (!byte_array_v<M, I> || field_t<M, I>::count < 4) {
         return false;
     } else {
         using E = typename field_t<M, I>::element_type;
