@@ -55,8 +55,6 @@ namespace codec {
 // written through data(): no clamp, no zero fill (the codecs' encoders).
 template <std::size_t N>
 constexpr void set_written_size(bytes<N>& b, std::size_t n) noexcept;
-// Tag of the bytes constructor that leaves the bytes and the size unset.
-struct unset_t {};
 }  // namespace codec
 
 // Up to N bytes, stored inline. Unused capacity is always zero, so the default

@@ -197,7 +197,7 @@ ROBOWIRE_SPEED_INLINE constexpr result<Variant> decode_variant_at(const std::uin
     // as the smallest alternative, replaced below.
     result<Variant> r = ROBOWIRE_OPTIMIZE_SIZE
                             ? result<Variant>{std::in_place, std::in_place_index<smallest_alternative<Variant>::value>}
-                            : result<Variant>{unset_result_t{}};
+                            : result<Variant>{codec::unset_t{}};
     constexpr auto all = std::make_index_sequence<std::variant_size_v<Variant>>{};
     if (in.size() <= KeyOffset) {
         r = fail(errc::too_short, in.size());

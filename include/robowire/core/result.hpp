@@ -205,14 +205,13 @@ namespace detail {
 struct value_init_t {
     explicit value_init_t() = default;
 };
-// Tag of result's constructor that sets nothing (see there).
-struct unset_result_t {
-    explicit unset_result_t() = default;
-};
 }  // namespace detail
 // Building blocks for protocol headers (docs/extending.md): what the generic
 // codec does, for a protocol's own dispatchers and encoders.
 namespace codec {
+// Tag of the constructors that set nothing: result's (neither value nor error
+// yet) and bytes' (bytes and size unset), for codecs that then set everything.
+struct unset_t {};
 // The value of a result known to hold one (the caller has just built it so):
 // no access check (at -Os the check is a call that is not folded away).
 template <class T>
@@ -249,7 +248,7 @@ public:
         : value_(cleared{}), ok_(true) {}
     // Neither a value nor an error yet: for a codec that makes it one or the
     // other on every path before it is read (no store before the branch).
-    constexpr explicit result(detail::unset_result_t) noexcept {}
+    constexpr explicit result(codec::unset_t) noexcept {}
     // A value-holding result whose value is T(arg).
     template <class A>
     constexpr result(std::in_place_t, const A& arg) noexcept(std::is_nothrow_constructible_v<T, const A&>)
@@ -356,6 +355,14 @@ template <class T>
 constexpr error codec::unchecked_error(const result<T>& r) noexcept {
     return r.error_;
 }
+namespace codec {
+// Makes r hold T(arg), whatever it held (also nothing, after result(unset_t)),
+// and returns the value, to be written in place.
+template <class T, class A>
+constexpr T& emplace_value(result<T>& r, const A& arg) noexcept {
+    return detail::build_value(r, arg);
+}
+}  // namespace codec
 
 // Shorthand for returning an error (offsets past 65535 become 65535).
 constexpr error fail(errc code, std::size_t offset) noexcept {

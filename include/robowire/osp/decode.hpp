@@ -36,7 +36,7 @@ public:
     constexpr decode_result(result<message> r, std::optional<osp::frame> f) noexcept : result<message>(r), frame_(f) {}
     constexpr explicit decode_result(std::in_place_t) noexcept : result<message>(std::in_place) {}
     // Neither a message nor an error yet (see result's constructor), no frame.
-    constexpr explicit decode_result(detail::unset_result_t u) noexcept : result<message>(u) {}
+    constexpr explicit decode_result(codec::unset_t u) noexcept : result<message>(u) {}
     using result<message>::operator=;
     constexpr const std::optional<osp::frame>& frame() const noexcept { return frame_; }
 
@@ -114,7 +114,7 @@ constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
 template <std::size_t I>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_message(decode_result& d, std::span<const std::uint8_t> in) noexcept {
     auto& m = ROBOWIRE_OPTIMIZE_SIZE ? codec::emplace_alternative<I>(codec::unchecked_value(d))
-                                     : *std::get_if<I>(&detail::build_value(d, std::in_place_index<I>));  // d unset
+                                     : *std::get_if<I>(&codec::emplace_value<message>(d, std::in_place_index<I>));  // d unset
     if (const error e = codec::decode_fields(m, in); e.code != errc::ok) d = e;
 }
 template <std::size_t... I>
@@ -156,7 +156,7 @@ constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) no
     const std::span<const std::uint8_t> in(data, size);
     // A message or an error on every path below (under ROBOWIRE_OPTIMIZE_SIZE: a
     // default message first, less code).
-    decode_result d = ROBOWIRE_OPTIMIZE_SIZE ? decode_result{std::in_place} : decode_result{detail::unset_result_t{}};
+    decode_result d = ROBOWIRE_OPTIMIZE_SIZE ? decode_result{std::in_place} : decode_result{codec::unset_t{}};
     if (const error e = check_frame(in)) {
         d = e;
         return d;
