@@ -1,0 +1,176 @@
+// robowire and the hand-written baselines of bench/buwizz3.cpp, run on the same inputs:
+// the same outcome, error code and offset, and output (bench/verify/run).
+#include "../buwizz3.cpp"
+#include "check.hpp"
+#include <vector>
+
+static bool same_status(const hw_status& h, const bw::status& s) {
+    if (h.flags != s.flags || h.battery != s.battery_voltage_raw || h.temperature != s.temperature_c ||
+        h.charge != s.charge_current_ma) return false;
+    for (std::size_t i = 0; i < 6; ++i) if (h.current[i] != s.motor_current_raw[i]) return false;
+    for (std::size_t i = 0; i < 3; ++i) if (h.accel[i] != s.accel_raw[i]) return false;
+    if (h.bl_command != s.bootloader_response.command || h.bl_code != s.bootloader_response.code) return false;
+    for (std::size_t i = 0; i < 3; ++i) if (h.bl_data[i] != s.bootloader_response.data[i]) return false;
+    for (std::size_t i = 0; i < 4; ++i) {
+        const auto& m = s.pu_motors[i];
+        if (h.motors[i].type != m.type || h.motors[i].velocity != m.velocity ||
+            h.motors[i].absolute != m.absolute_position || h.motors[i].position != m.position) return false;
+    }
+    if (h.has_pid != s.pid_state.has_value()) return false;
+    if (h.has_pid) {
+        const auto& p = *s.pid_state;
+        if (std::memcmp(&h.process_value, &p.process_value, 4) || std::memcmp(&h.error, &p.error, 4) ||
+            std::memcmp(&h.output, &p.output, 4) || h.integrator != p.integrator || h.motor_output != p.motor_output)
+            return false;
+    }
+    return h.ignored_trailing_bytes == s.ignored_trailing_bytes;
+}
+static void check_status(const std::uint8_t* p, std::size_t n, const char* ctx0, std::size_t a, std::size_t b) {
+    const std::span<const std::uint8_t> in(p, n);
+    auto r = robowire::decode<bw::status>(in);
+    bw::status into{};
+    const auto ei = robowire::decode_into(into, in);
+    hw_status h{};
+    const auto e = hw_decode_status(p, n, h);
+    const std::string ctx = std::string(ctx0) + " n=" + std::to_string(n) + " " + std::to_string(a) + "/" + std::to_string(b);
+    if (same_err("status decode", rw_err(r), e, ctx) && e == hw::good) {
+        if (!same_status(h, *r)) mismatch("status decode", ctx);
+    }
+    if (same_err("status decode_into", ei, e, ctx) && e == hw::good) {
+        if (!same_status(h, into)) mismatch("status decode_into", ctx);
+    }
+}
+
+template <class M, class Enc>
+static void check_encode(const char* what, const M& m, Enc enc, const std::string& ctx) {
+    constexpr std::size_t max = robowire::max_size_v<M>;
+    // encode
+    auto r = robowire::encode(m);
+    std::array<std::uint8_t, 64> hb;
+    hb.fill(0xA5);
+    const auto e = enc(m, hb.data(), hb.size());
+    if (same_err(what, rw_err(r), e, ctx + " encode") && e == hw::good) {
+        if (r->size() != max || std::memcmp(r->data(), hb.data(), max) != 0) mismatch(what, ctx);
+        for (std::size_t i = max; i < 64; ++i) if (hb[i] != 0xA5) mismatch(what, ctx + " wrote past");
+    }
+    if (e != hw::good)
+        for (auto c : hb) if (c != 0xA5) { mismatch(what, ctx + " wrote on error"); break; }
+    // encode_to, every buffer size
+    for (std::size_t size = 0; size <= max + 2; ++size) {
+        std::array<std::uint8_t, 64> rb, b2;
+        rb.fill(0x5A);
+        b2.fill(0x5A);
+        auto n = robowire::encode_to(m, std::span(rb.data(), size));
+        const auto e2 = enc(m, b2.data(), size);
+        if (same_err((std::string(what) + " encode_to").c_str(), rw_err(n), e2, ctx + " size=" + std::to_string(size))) {
+            if (rb != b2) mismatch(what, ctx + " encode_to bytes size=" + std::to_string(size));
+            if (e2 == hw::good && *n != max) mismatch(what, "written size");
+        }
+    }
+}
+
+int main() {
+    // ---- status
+    bench::rng rr;
+    const auto ins = status_inputs();
+    for (std::size_t v = 0; v < ins.size(); ++v) {
+        std::array<std::uint8_t, 131> buf{};
+        std::copy(ins[v].begin(), ins[v].end(), buf.begin());
+        for (std::size_t i = 68; i < buf.size(); ++i) buf[i] = rr.byte();
+        for (std::size_t n = 0; n <= 131; ++n) check_status(buf.data(), n, "len", v, 0);
+        // every single-byte change at every length for variant 0; at 54, 68 and 129 for all
+        for (std::size_t n = 0; n <= 131; ++n) {
+            if (v != 0 && n != 54 && n != 68 && n != 129) continue;
+            for (std::size_t pos = 0; pos < n; ++pos)
+                for (int val = 0; val < 256; ++val) {
+                    auto b = buf;
+                    b[pos] = static_cast<std::uint8_t>(val);
+                    check_status(b.data(), n, "byte", pos, static_cast<std::size_t>(val));
+                }
+        }
+    }
+    // ---- 0x30
+    for (const auto& base : motor_inputs()) {
+        check_encode("encode 0x30", base, hw_encode_motor, "bench");
+        for (std::size_t f = 0; f < 8; ++f)
+            for (int val = 0; val < 256; ++val) {
+                auto m = base;
+                if (f < 6) m.power[static_cast<std::size_t>(f)] = static_cast<std::int8_t>(val);
+                else if (f == 6) m.brake_flags = static_cast<std::uint8_t>(val);
+                else m.lut_disable_flags = static_cast<std::uint8_t>(val);
+                check_encode("encode 0x30", m, hw_encode_motor, "field " + std::to_string(f) + "=" + std::to_string(val));
+            }
+        // two bad fields: the first one is reported
+        for (std::size_t f = 0; f < 8; ++f)
+            for (std::size_t g = f + 1; g < 8; ++g) {
+                auto m = base;
+                for (std::size_t k : {f, g}) {
+                    if (k < 6) m.power[static_cast<std::size_t>(k)] = -128;
+                    else if (k == 6) m.brake_flags = 0x40;
+                    else m.lut_disable_flags = 0xFF;
+                }
+                check_encode("encode 0x30", m, hw_encode_motor, "pair");
+            }
+    }
+    // ---- 0x31
+    for (const auto& base : motor_ext_inputs()) {
+        check_encode("encode 0x31", base, hw_encode_motor_ext, "bench");
+        for (std::size_t f = 0; f < 4; ++f)
+            for (int val = 0; val < 256; ++val) {
+                auto m = base;
+                if (f < 2) m.power[static_cast<std::size_t>(f)] = static_cast<std::int8_t>(val);
+                else if (f == 2) m.brake_flags = static_cast<std::uint8_t>(val);
+                else m.lut_disable_flags = static_cast<std::uint8_t>(val);
+                check_encode("encode 0x31", m, hw_encode_motor_ext, "field " + std::to_string(f) + "=" + std::to_string(val));
+            }
+        for (std::size_t f = 0; f < 4; ++f)
+            for (std::size_t g = f + 1; g < 4; ++g) {
+                auto m = base;
+                for (std::size_t k : {f, g}) {
+                    if (k < 2) m.power[static_cast<std::size_t>(k)] = -128;
+                    else if (k == 2) m.brake_flags = 0x80;
+                    else m.lut_disable_flags = 0x40;
+                }
+                check_encode("encode 0x31", m, hw_encode_motor_ext, "pair");
+            }
+        for (std::uint32_t x : {0u, 1u, 0x80000000u, 0xFFFFFFFFu, 0x7FFFFFFFu}) {
+            auto m = base;
+            m.reference[x % 4] = static_cast<std::int32_t>(x);
+            check_encode("encode 0x31", m, hw_encode_motor_ext, "ref");
+        }
+    }
+    // ---- 0x53
+    auto set = [](bw::set_pid_parameters& m, std::size_t k, int val) {
+        switch (k) {
+        case 0: m.port = static_cast<std::uint8_t>(val); break;
+        case 1: m.lim_out = static_cast<std::int8_t>(val); break;
+        case 2: m.deadband_out = static_cast<std::int8_t>(val); break;
+        case 3: m.deadband_out_boost = static_cast<std::int8_t>(val); break;
+        default: m.mode = static_cast<bw::port_function>(val); break;
+        }
+    };
+    const int bad[5] = {4, 0, -1, -128, 0x13};
+    for (const auto& base : pid_inputs()) {
+        check_encode("encode 0x53", base, hw_encode_pid, "bench");
+        for (std::size_t k = 0; k < 5; ++k)
+            for (int val = 0; val < 256; ++val) {
+                auto m = base;
+                set(m, k, val);
+                check_encode("encode 0x53", m, hw_encode_pid, "field " + std::to_string(k) + "=" + std::to_string(val));
+            }
+        for (std::size_t k = 0; k < 5; ++k)
+            for (std::size_t g = k + 1; g < 5; ++g) {
+                auto m = base;
+                set(m, k, bad[k]);
+                set(m, g, bad[g]);
+                check_encode("encode 0x53", m, hw_encode_pid, "pair");
+            }
+        for (float f : {std::numeric_limits<float>::quiet_NaN(), -0.0f, std::numeric_limits<float>::infinity(), 1e-40f}) {
+            auto m = base;
+            m.kd = f;
+            m.out_lp = -f;
+            check_encode("encode 0x53", m, hw_encode_pid, "float");
+        }
+    }
+    return report();
+}

@@ -1,0 +1,83 @@
+// robowire and the hand-written baselines of bench/navbot.cpp, run on the same inputs:
+// the same outcome, error code and offset, and output (bench/verify/run).
+#include "../navbot.cpp"
+#include "check.hpp"
+
+static void check_dec(const std::uint8_t* p, std::size_t n, const std::string& ctx) {
+    auto r = robowire::decode<nb::maneuver>(std::span<const std::uint8_t>(p, n));
+    nb::maneuver m{};
+    const auto e = hw_decode(p, n, m);
+    if (same_err("maneuver decode", rw_err(r), e, ctx + " n=" + std::to_string(n)) && e == hw::good && !(m == *r))
+        mismatch("maneuver decode", ctx);
+}
+static void check_enc(const nb::maneuver& m, const std::string& ctx) {
+    auto r = robowire::encode(m);
+    std::array<std::uint8_t, 32> b;
+    b.fill(0xA5);
+    const auto e = hw_encode(m, b.data());
+    if (same_err("maneuver encode", rw_err(r), e, ctx) && e == hw::good)
+        if (r->size() != 20 || std::memcmp(r->data(), b.data(), 20) != 0) mismatch("maneuver encode", ctx);
+    for (std::size_t i = e == hw::good ? 20 : 0; i < b.size(); ++i)
+        if (b[i] != 0xA5) { mismatch("maneuver encode", ctx + " stray write"); break; }
+}
+static void set(nb::maneuver& m, std::size_t k, int v) {
+    const auto s = static_cast<std::int8_t>(v);
+    const auto u = static_cast<std::uint8_t>(v);
+    switch (k) {
+    case 0: m.roll = s; break;
+    case 1: m.height = u; break;
+    case 2: m.pitch = s; break;
+    case 3: m.yaw = s; break;
+    case 4: m.switch_a = static_cast<nb::switch_a>(u); break;
+    case 5: m.switch_b = static_cast<nb::switch_b>(u); break;
+    case 6: m.switch_c = static_cast<nb::switch_c>(u); break;
+    case 7: m.switch_d = static_cast<nb::switch_d>(u); break;
+    case 8: m.ball_x = s; break;
+    default: m.ball_y = s; break;
+    }
+}
+int main() {
+    bench::rng rr;
+    const auto frames = maneuver_frames();
+    for (std::size_t v = 0; v < frames.size(); ++v) {
+        std::array<std::uint8_t, 22> buf{};
+        std::copy(frames[v].begin(), frames[v].end(), buf.begin());
+        buf[20] = rr.byte();
+        buf[21] = rr.byte();
+        for (std::size_t n = 0; n <= 22; ++n) {
+            check_dec(buf.data(), n, "len");
+            for (std::size_t pos = 0; pos < n; ++pos)
+                for (int val = 0; val < 256; ++val) {
+                    auto b = buf;
+                    b[pos] = static_cast<std::uint8_t>(val);
+                    check_dec(b.data(), n, "byte " + std::to_string(pos) + "=" + std::to_string(val));
+                }
+        }
+        // two bytes changed: the first failing check wins
+        for (std::size_t a = 0; a < 20; ++a)
+            for (std::size_t b2 = a + 1; b2 < 20; ++b2) {
+                auto b = buf;
+                b[a] = 0x80;
+                b[b2] = 0xFF;
+                check_dec(b.data(), 20, "pair");
+            }
+    }
+    const int bad[10] = {101, 101, -101, -128, 3, 2, 2, 3, 6, -6};
+    for (const auto& base : maneuvers()) {
+        check_enc(base, "bench");
+        for (std::size_t k = 0; k < 10; ++k)
+            for (int val = 0; val < 256; ++val) {
+                auto m = base;
+                set(m, k, val);
+                check_enc(m, "field " + std::to_string(k) + "=" + std::to_string(val));
+            }
+        for (std::size_t k = 0; k < 10; ++k)
+            for (std::size_t g = k + 1; g < 10; ++g) {
+                auto m = base;
+                set(m, k, bad[k]);
+                set(m, g, bad[g]);
+                check_enc(m, "pair");
+            }
+    }
+    return report();
+}
