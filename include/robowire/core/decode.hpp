@@ -64,19 +64,35 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, std::span<const std::
     if constexpr (reports_trailing<M>) out.ignored_trailing_bytes = in.size() - known.size();
     return err;
 }
-// decode_into without the check of the fixed byte at offset Known, which a
-// dispatcher has matched already (no_offset: every fixed byte is checked).
-template <std::size_t Known, class M>
-ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const std::uint8_t> in) noexcept {
+// M's fixed bytes but the one at offset Known, which a dispatcher has matched
+// already (no_offset: every fixed byte is checked), then the input's length.
+// On a failure makes r (an error, or a result) hold the error and returns false.
+template <std::size_t Known, class M, class R>
+ROBOWIRE_ALWAYS_INLINE constexpr bool input_ok(R& r, std::span<const std::uint8_t> in) noexcept {
     constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input();
     if (const error e = codec::check_fixed<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{});
-        e.code != errc::ok)
-        return e;
-    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // no call
+        e.code != errc::ok) {
+        r = e;
+        return false;
+    }
+    if (in.size() < min || in.size() > max) [[unlikely]] {
+        r = length_error(in.size(), min, max);
+        return false;
+    }
+    return true;
+}
+// decode_into without the check of the fixed byte at offset Known.
+template <std::size_t Known, class M>
+ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const std::uint8_t> in) noexcept {
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // no call, each error returned as found: smaller code
+        constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input();
+        if (const error e = codec::check_fixed<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{});
+            e.code != errc::ok)
+            return e;
         if (in.size() < min) return codec::fail_at(errc::too_short, in.size());
         if (in.size() > max) return codec::fail_at(errc::too_long, max);
-    } else if (in.size() < min || in.size() > max) [[unlikely]] {
-        return length_error(in.size(), min, max);
+    } else if (error e{}; !input_ok<Known, M>(e, in)) {
+        return e;
     }
     return decode_body(out, in);
 }
@@ -102,9 +118,20 @@ template <described M>
 // enum is checked, and the error says what and at which byte offset.
 template <described M>
 [[nodiscard]] constexpr result<M> decode(std::span<const std::uint8_t> in) noexcept {
-    result<M> r = detail::in_place_result<M>();  // built in place: every return below returns r
-    if (const error e = decode_into(codec::unchecked_value(r), in); e.code != errc::ok) r = e;
-    return r;
+    // Built in place: every return returns r, declared here (from an inner
+    // scope g++ 12 copies it out). Speed: the message is made once the input
+    // passed its checks, so that the fields' stores overwrite its member
+    // initialisers with no branch between and the compiler drops them.
+    // Size: decode_into's code.
+    result<M> r = ROBOWIRE_OPTIMIZE_SIZE ? detail::in_place_result<M>() : result<M>(codec::unset_t{});
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
+        if (const error e = decode_into(codec::unchecked_value(r), in); e.code != errc::ok) r = e;
+        return r;
+    } else {
+        if (!detail::input_ok<detail::no_offset, M>(r, in)) return r;
+        if (const error e = detail::decode_body(detail::build_default(r), in); e.code != errc::ok) r = e;
+        return r;
+    }
 }
 }  // namespace ROBOWIRE_MODE_NAMESPACE
 

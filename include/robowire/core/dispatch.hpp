@@ -121,15 +121,16 @@ ROBOWIRE_ALWAYS_INLINE constexpr auto& make_alternative(result<Variant>& r) noex
     else return *std::get_if<I>(&build_value(r, std::in_place_index<I>));  // r holds nothing yet
 }
 // Makes alternative I of r's variant and decodes `in` into it, in place.
-// Checked: fixed bytes and length checked already (see check_alternative).
+// Checked: fixed bytes and length checked already (see check_alternative);
+// otherwise they are checked here (but the key) before the alternative is
+// made, so that the fields' stores overwrite its member initialisers with
+// no branch between and the compiler drops them (see decode()).
 template <std::size_t I, std::size_t KeyOffset, bool Checked, class Variant>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r,
                                                          std::span<const std::uint8_t> in) noexcept {
-    auto& m = make_alternative<I>(r);
-    error e{};
-    if constexpr (Checked) e = decode_body(m, in);
-    else e = decode_checked<KeyOffset>(m, in);  // the key matched already
-    if (e.code != errc::ok) r = e;
+    if constexpr (!Checked)
+        if (!input_ok<KeyOffset, std::variant_alternative_t<I, Variant>>(r, in)) return;
+    if (const error e = decode_body(make_alternative<I>(r), in); e.code != errc::ok) r = e;
 }
 template <std::size_t KeyOffset, bool Checked, class Variant, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_index(result<Variant>& r, std::size_t index,

@@ -224,6 +224,9 @@ namespace detail {
 // Makes r hold T(arg), whatever it held, and returns the value.
 template <class T, class A>
 constexpr T& build_value(result<T>& r, const A& arg) noexcept;
+// Makes r hold a default-initialised T (member initialisers run), whatever it held.
+template <class T>
+constexpr T& build_default(result<T>& r) noexcept;
 }  // namespace detail
 
 // Either a T or an error; they share storage. T must be trivially copyable
@@ -304,6 +307,8 @@ private:
     template <class U, class A>
     friend constexpr U& detail::build_value(result<U>& r, const A& arg) noexcept;
     template <class U>
+    friend constexpr U& detail::build_default(result<U>& r) noexcept;
+    template <class U>
     friend constexpr robowire::error codec::unchecked_error(const result<U>& r) noexcept;
     constexpr void check(bool want_value) const noexcept(detail::access_noexcept) {
         if (ok_ == want_value) return;
@@ -347,6 +352,16 @@ constexpr T& detail::build_value(result<T>& r, const A& arg) noexcept {
         r = result<T>(std::in_place, arg);  // a whole-object copy switches the active member
     } else {
         ::new (static_cast<void*>(&r.value_)) typename result<T>::holder(std::in_place, arg);
+        r.ok_ = true;
+    }
+    return r.value_.v;
+}
+template <class T>
+constexpr T& detail::build_default(result<T>& r) noexcept {
+    if (std::is_constant_evaluated()) {
+        r = result<T>(std::in_place);  // a whole-object copy switches the active member
+    } else {
+        ::new (static_cast<void*>(&r.value_)) typename result<T>::holder(std::in_place);
         r.ok_ = true;
     }
     return r.value_.v;
