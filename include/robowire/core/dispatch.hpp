@@ -57,6 +57,17 @@ constexpr int key_of(std::size_t key_offset) noexcept {
 }
 }  // namespace codec
 
+namespace codec::inline ROBOWIRE_MODE_NAMESPACE {
+// Makes alternative I of the variant in r, in place, and returns it, for a
+// dispatcher's result: one that holds nothing yet (result(codec::unset_t)),
+// or, under ROBOWIRE_OPTIMIZE_SIZE, a variant (started as any alternative: less code).
+template <std::size_t I, class Variant>
+ROBOWIRE_ALWAYS_INLINE constexpr auto& make_alternative(result<Variant>& r) noexcept {
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) return emplace_alternative<I>(unchecked_value(r));
+    else return *std::get_if<I>(&detail::build_value(r, std::in_place_index<I>));
+}
+}  // namespace codec::inline ROBOWIRE_MODE_NAMESPACE
+
 namespace detail {
 // Not constexpr: reached at compile time, it is the compile error (two
 // alternatives of a variant have the same key: the second could never be decoded).
@@ -112,14 +123,6 @@ constexpr std::size_t index_of_key(std::uint8_t key) noexcept {
         return key_index_v<Variant, KeyOffset>[key];
     }
 }
-
-// Makes alternative I in r (see decode_variant_at) and returns it.
-template <std::size_t I, class Variant>
-ROBOWIRE_ALWAYS_INLINE constexpr auto& make_alternative(result<Variant>& r) noexcept {
-    if constexpr (ROBOWIRE_OPTIMIZE_SIZE)
-        return codec::emplace_alternative<I>(codec::unchecked_value(r));   // holds a value
-    else return *std::get_if<I>(&build_value(r, std::in_place_index<I>));  // r holds nothing yet
-}
 // Makes alternative I of r's variant and decodes `in` into it, in place.
 // Checked: fixed bytes and length checked already (see check_alternative);
 // otherwise they are checked here (but the key) before the alternative is
@@ -130,7 +133,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r,
                                                          std::span<const std::uint8_t> in) noexcept {
     if constexpr (!Checked)
         if (!input_ok<KeyOffset, std::variant_alternative_t<I, Variant>>(r, in)) return;
-    if (const error e = decode_body(make_alternative<I>(r), in); e.code != errc::ok) r = e;
+    if (const error e = decode_body(codec::make_alternative<I>(r), in); e.code != errc::ok) r = e;
 }
 template <std::size_t KeyOffset, bool Checked, class Variant, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_index(result<Variant>& r, std::size_t index,

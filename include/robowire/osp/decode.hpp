@@ -113,13 +113,7 @@ constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
 // Fixed bytes checked by the frame already: makes the message and decodes its fields in place.
 template <std::size_t I>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_message(decode_result& d, std::span<const std::uint8_t> in) noexcept {
-    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // d holds a message: replaced
-        auto& m = codec::emplace_alternative<I>(codec::unchecked_value(d));
-        if (const error e = codec::decode_fields(m, in); e.code != errc::ok) d = e;
-    } else {  // d is unset: built in place
-        auto& m = *std::get_if<I>(&codec::emplace_value<message>(d, std::in_place_index<I>));
-        if (const error e = codec::decode_fields(m, in); e.code != errc::ok) d = e;
-    }
+    if (const error e = codec::decode_fields(codec::make_alternative<I>(d), in); e.code != errc::ok) d = e;
 }
 template <std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::uint16_t key,
