@@ -25,14 +25,14 @@ static bool same_status(const hw_status& h, const bw::status& s) {
     }
     return h.ignored_trailing_bytes == s.ignored_trailing_bytes;
 }
-static void check_status(const std::uint8_t* p, std::size_t n, const char* ctx0, std::size_t a, std::size_t b) {
+static void check_status(const std::uint8_t* p, std::size_t n, const std::string& ctx0, std::size_t variant) {
     const std::span<const std::uint8_t> in(p, n);
     auto r = robowire::decode<bw::status>(in);
     bw::status into{};
     const auto ei = robowire::decode_into(into, in);
     hw_status h{};
     const auto e = hw_decode_status(p, n, h);
-    const std::string ctx = std::string(ctx0) + " n=" + std::to_string(n) + " " + std::to_string(a) + "/" + std::to_string(b);
+    const std::string ctx = ctx0 + " n=" + std::to_string(n) + " variant " + std::to_string(variant);
     if (same_err("status decode", rw_err(r), e, ctx) && e == hw::good) {
         if (!same_status(h, *r)) mismatch("status decode", ctx);
     }
@@ -77,62 +77,33 @@ int main() {
         std::array<std::uint8_t, 131> buf{};
         std::copy(ins[v].begin(), ins[v].end(), buf.begin());
         for (std::size_t i = 68; i < buf.size(); ++i) buf[i] = rr.byte();
-        for (std::size_t n = 0; n <= 131; ++n) check_status(buf.data(), n, "len", v, 0);
         // every single-byte change at every length for variant 0; at 54, 68 and 129 for all
-        for (std::size_t n = 0; n <= 131; ++n) {
-            if (v != 0 && n != 54 && n != 68 && n != 129) continue;
-            for (std::size_t pos = 0; pos < n; ++pos)
-                for (int val = 0; val < 256; ++val) {
-                    auto b = buf;
-                    b[pos] = static_cast<std::uint8_t>(val);
-                    check_status(b.data(), n, "byte", pos, static_cast<std::size_t>(val));
-                }
-        }
+        sweep_lengths(
+            buf, [&](std::size_t n) { return v == 0 || n == 54 || n == 68 || n == 129; },
+            [&](const std::uint8_t* p, std::size_t n, const std::string& ctx) { check_status(p, n, ctx, v); });
     }
     // ---- 0x30
+    const auto power_flags = [](std::size_t powers) {  // powers[0..powers), then the brake and LUT flag bytes
+        return [powers](auto& m, std::size_t k, int val) {
+            if (k < powers) m.power[k] = static_cast<std::int8_t>(val);
+            else if (k == powers) m.brake_flags = static_cast<std::uint8_t>(val);
+            else m.lut_disable_flags = static_cast<std::uint8_t>(val);
+        };
+    };
+    const int bad30[8] = {-128, -128, -128, -128, -128, -128, 0x40, 0xFF};
     for (const auto& base : motor_inputs()) {
         check_encode("encode 0x30", base, hw_encode_motor, "bench");
-        for (std::size_t f = 0; f < 8; ++f)
-            for (int val = 0; val < 256; ++val) {
-                auto m = base;
-                if (f < 6) m.power[static_cast<std::size_t>(f)] = static_cast<std::int8_t>(val);
-                else if (f == 6) m.brake_flags = static_cast<std::uint8_t>(val);
-                else m.lut_disable_flags = static_cast<std::uint8_t>(val);
-                check_encode("encode 0x30", m, hw_encode_motor, "field " + std::to_string(f) + "=" + std::to_string(val));
-            }
-        // two bad fields: the first one is reported
-        for (std::size_t f = 0; f < 8; ++f)
-            for (std::size_t g = f + 1; g < 8; ++g) {
-                auto m = base;
-                for (std::size_t k : {f, g}) {
-                    if (k < 6) m.power[static_cast<std::size_t>(k)] = -128;
-                    else if (k == 6) m.brake_flags = 0x40;
-                    else m.lut_disable_flags = 0xFF;
-                }
-                check_encode("encode 0x30", m, hw_encode_motor, "pair");
-            }
+        sweep_fields(base, 8, power_flags(6), bad30, [](const bw::set_motor_data& m, const std::string& ctx) {
+            check_encode("encode 0x30", m, hw_encode_motor, ctx);
+        });
     }
     // ---- 0x31
+    const int bad31[4] = {-128, -128, 0x80, 0x40};
     for (const auto& base : motor_ext_inputs()) {
         check_encode("encode 0x31", base, hw_encode_motor_ext, "bench");
-        for (std::size_t f = 0; f < 4; ++f)
-            for (int val = 0; val < 256; ++val) {
-                auto m = base;
-                if (f < 2) m.power[static_cast<std::size_t>(f)] = static_cast<std::int8_t>(val);
-                else if (f == 2) m.brake_flags = static_cast<std::uint8_t>(val);
-                else m.lut_disable_flags = static_cast<std::uint8_t>(val);
-                check_encode("encode 0x31", m, hw_encode_motor_ext, "field " + std::to_string(f) + "=" + std::to_string(val));
-            }
-        for (std::size_t f = 0; f < 4; ++f)
-            for (std::size_t g = f + 1; g < 4; ++g) {
-                auto m = base;
-                for (std::size_t k : {f, g}) {
-                    if (k < 2) m.power[static_cast<std::size_t>(k)] = -128;
-                    else if (k == 2) m.brake_flags = 0x80;
-                    else m.lut_disable_flags = 0x40;
-                }
-                check_encode("encode 0x31", m, hw_encode_motor_ext, "pair");
-            }
+        sweep_fields(base, 4, power_flags(2), bad31, [](const bw::set_motor_data_extended& m, const std::string& ctx) {
+            check_encode("encode 0x31", m, hw_encode_motor_ext, ctx);
+        });
         for (std::uint32_t x : {0u, 1u, 0x80000000u, 0xFFFFFFFFu, 0x7FFFFFFFu}) {
             auto m = base;
             m.reference[x % 4] = static_cast<std::int32_t>(x);
@@ -149,22 +120,12 @@ int main() {
         default: m.mode = static_cast<bw::port_function>(val); break;
         }
     };
-    const int bad[5] = {4, 0, -1, -128, 0x13};
+    const int bad53[5] = {4, 0, -1, -128, 0x13};
     for (const auto& base : pid_inputs()) {
         check_encode("encode 0x53", base, hw_encode_pid, "bench");
-        for (std::size_t k = 0; k < 5; ++k)
-            for (int val = 0; val < 256; ++val) {
-                auto m = base;
-                set(m, k, val);
-                check_encode("encode 0x53", m, hw_encode_pid, "field " + std::to_string(k) + "=" + std::to_string(val));
-            }
-        for (std::size_t k = 0; k < 5; ++k)
-            for (std::size_t g = k + 1; g < 5; ++g) {
-                auto m = base;
-                set(m, k, bad[k]);
-                set(m, g, bad[g]);
-                check_encode("encode 0x53", m, hw_encode_pid, "pair");
-            }
+        sweep_fields(base, 5, set, bad53, [](const bw::set_pid_parameters& m, const std::string& ctx) {
+            check_encode("encode 0x53", m, hw_encode_pid, ctx);
+        });
         for (float f : {std::numeric_limits<float>::quiet_NaN(), -0.0f, std::numeric_limits<float>::infinity(), 1e-40f}) {
             auto m = base;
             m.kd = f;

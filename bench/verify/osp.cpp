@@ -49,15 +49,9 @@ static void sweep(const std::vector<frame10>& ins, F check) {
         std::copy(ins[v].begin(), ins[v].end(), buf.begin());
         buf[10] = rr.byte();
         buf[11] = rr.byte();
-        for (std::size_t n = 0; n <= 12; ++n) {
-            check(buf.data(), n, std::string("len v=") + std::to_string(v));
-            for (std::size_t pos = 0; pos < n; ++pos)
-                for (int val = 0; val < 256; ++val) {
-                    auto b = buf;
-                    b[pos] = static_cast<std::uint8_t>(val);
-                    check(b.data(), n, "byte " + std::to_string(pos) + "=" + std::to_string(val));
-                }
-        }
+        sweep_lengths(buf, [](std::size_t) { return true; }, [&](const std::uint8_t* p, std::size_t n, const std::string& ctx) {
+            check(p, n, ctx + " v=" + std::to_string(v));
+        });
         for (std::size_t a = 0; a < 10; ++a)
             for (std::size_t c = a + 1; c < 10; ++c)
                 for (int x : {0x00, 0x13, 0xFF}) {
