@@ -1,6 +1,6 @@
-// Shared by the fuzz harnesses: a byte reader, the round-trip check, and a
-// check that aborts with a message (libFuzzer reports it as a crash).
-// Messages are made from the input by <robowire/fuzz.hpp> (robowire::fuzz::make).
+// Shared by the fuzz harnesses: the round-trip check, and a check that aborts
+// with a message (libFuzzer reports it as a crash). Messages and values are
+// made from the input by <robowire/fuzz.hpp> (robowire::fuzz::make, fuzz::source).
 #pragma once
 
 #include <robowire/core.hpp>
@@ -38,21 +38,6 @@ namespace fuzz {
             std::abort();                                                                  \
         }                                                                                  \
     } while (0)
-
-// Reads values from the fuzz input; past the end it yields zeros.
-struct reader {
-    std::span<const std::uint8_t> in;
-    std::size_t pos = 0;
-    std::uint8_t byte() { return pos < in.size() ? in[pos++] : 0; }
-    template <class T>
-    T integer() {
-        std::make_unsigned_t<T> u = 0;
-        for (std::size_t i = 0; i < sizeof(T); ++i) u = static_cast<decltype(u)>((u << 8) | byte());
-        return static_cast<T>(u);
-    }
-    bool empty() const { return pos >= in.size(); }
-    std::span<const std::uint8_t> rest() { auto r = in.subspan(pos < in.size() ? pos : in.size()); pos = in.size(); return r; }
-};
 
 inline bool same_bytes(std::span<const std::uint8_t> a, std::span<const std::uint8_t> b) {
     return robowire::equal_bytes(a, b);

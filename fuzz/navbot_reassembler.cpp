@@ -21,7 +21,7 @@ namespace {
 namespace nb = robowire::navbot;
 
 void arbitrary_frames(std::span<const std::uint8_t> in) {
-    fuzz::reader r{in};
+    robowire::fuzz::source r(in);
     nb::reassembler<60> small;
     while (!r.empty()) {
         const std::size_t len = r.byte() % 24;  // mostly 20, sometimes not a frame
@@ -51,7 +51,7 @@ void arbitrary_frames(std::span<const std::uint8_t> in) {
 }
 
 void message_with_traffic(std::span<const std::uint8_t> in) {
-    fuzz::reader r{in};
+    robowire::fuzz::source r(in);
     const std::uint8_t cmd = r.byte();
     const std::size_t n = r.byte() % 200;
     std::vector<std::uint8_t> message(n);
