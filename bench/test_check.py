@@ -94,5 +94,10 @@ missing = copy.deepcopy(base)
 missing["cases"]["core.removed_case"] = {"robowire": {"instructions": 1.0, "estimated_cycles": 1.0}}
 code, out = gate(missing)
 expect("a case in the baseline that was not measured fails", code == 1 and "core.removed_case" in out)
+code, out = gate(missing, "--allow-removed")
+expect("... and with --allow-removed is listed and passes", code == 0 and "gone core.removed_case" in out)
+
+code, out = gate(base, "-q")
+expect("-q on unchanged figures prints only the verdict", code == 0 and out.strip().count("\n") == 0)
 
 sys.exit(1 if failed else 0)
