@@ -74,9 +74,7 @@ int main() {
     bench::rng rr;
     const auto ins = status_inputs();
     for (std::size_t v = 0; v < ins.size(); ++v) {
-        std::array<std::uint8_t, 131> buf{};
-        std::copy(ins[v].begin(), ins[v].end(), buf.begin());
-        for (std::size_t i = 68; i < buf.size(); ++i) buf[i] = rr.byte();
+        const auto buf = padded<131>(ins[v], rr);
         // every single-byte change at every length for variant 0; at 54, 68 and 129 for all
         sweep_lengths(
             buf, [&](std::size_t n) { return v == 0 || n == 54 || n == 68 || n == 129; },

@@ -1,6 +1,7 @@
 // Shared by bench/verify/*.cpp: compares an error of robowire with one of a
 // baseline (bench::hw::error), counts the inputs compared, reports mismatches.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstdio>
@@ -32,6 +33,15 @@ inline int report() {
     return g_fail ? 1 : 0;
 }
 
+// `in` followed by random bytes from `r` up to N bytes: an input to cut to
+// every length, past the message's end too.
+template <std::size_t N, class In, class Rng>
+std::array<std::uint8_t, N> padded(const In& in, Rng& r) {
+    std::array<std::uint8_t, N> buf{};
+    std::copy(in.begin(), in.end(), buf.begin());
+    for (std::size_t i = in.size(); i < N; ++i) buf[i] = r.byte();
+    return buf;
+}
 // The input `buf` cut to every length n from 0 to N: check(data, n, ctx) on
 // it as it is ("len"), and, where every_byte(n), with each byte before n set
 // to each of its 256 values ("byte POS=VAL").

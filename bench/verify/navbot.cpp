@@ -40,10 +40,7 @@ int main() {
     bench::rng rr;
     const auto frames = maneuver_frames();
     for (std::size_t v = 0; v < frames.size(); ++v) {
-        std::array<std::uint8_t, 22> buf{};
-        std::copy(frames[v].begin(), frames[v].end(), buf.begin());
-        buf[20] = rr.byte();
-        buf[21] = rr.byte();
+        const auto buf = padded<22>(frames[v], rr);
         sweep_lengths(buf, [](std::size_t) { return true; }, check_dec);
         // two bytes changed: the first failing check wins
         for (std::size_t a = 0; a < 20; ++a)

@@ -45,10 +45,7 @@ template <class F>
 static void sweep(const std::vector<frame10>& ins, F check) {
     bench::rng rr;
     for (std::size_t v = 0; v < ins.size(); ++v) {
-        std::array<std::uint8_t, 12> buf{};
-        std::copy(ins[v].begin(), ins[v].end(), buf.begin());
-        buf[10] = rr.byte();
-        buf[11] = rr.byte();
+        const auto buf = padded<12>(ins[v], rr);
         sweep_lengths(buf, [](std::size_t) { return true; }, [&](const std::uint8_t* p, std::size_t n, const std::string& ctx) {
             check(p, n, ctx + " v=" + std::to_string(v));
         });
