@@ -42,6 +42,44 @@ TEST_CASE("bytes<N> holds up to N bytes", "[core][bytes]") {
     CHECK(r == bytes<4>{1, 0, 0});  // grown bytes are zero
 }
 
+namespace {
+// An error of every code and some offsets survives a round trip through
+// result<bytes<N>>, which keeps it inside the bytes; a value then replaces it.
+template <std::size_t N>
+constexpr bool errors_round_trip() {
+    for (int c = 0; c <= static_cast<int>(errc::bad_json); ++c)
+        for (const int at : {0, 1, 0x1234, 0xFFFF}) {
+            const error e{static_cast<errc>(c), static_cast<std::uint16_t>(at)};
+            result<bytes<N>> r = e;
+            if (c == 0) continue;  // errc::ok: not an error a codec returns
+            if (r.has_value() || r.error() != e || r.code() != e.code) return false;
+            r = bytes<N>::zeros(N);  // full: size N is a value, never the error mark
+            if (!r.has_value() || r->size() != N || r.code() != errc::ok) return false;
+            r = e;
+            if (r || r.error() != e) return false;
+            if (r.value_or(bytes<N>{7}) != bytes<N>{7}) return false;
+        }
+    return true;
+}
+}  // namespace
+
+TEST_CASE("result<bytes<N>> keeps its error inside the bytes", "[core][bytes]") {
+    // the size takes the smallest type that also holds one value more than N
+    STATIC_REQUIRE(sizeof(bytes<9>) == 10);
+    STATIC_REQUIRE(sizeof(bytes<254>) == 255);
+    STATIC_REQUIRE(sizeof(bytes<302>) == 304);
+    STATIC_REQUIRE(sizeof(result<bytes<302>>) == 304);  // no flag beside the bytes (else 308)
+    STATIC_REQUIRE(errors_round_trip<3>());  // too small for an error: a flag beside it
+    STATIC_REQUIRE(errors_round_trip<4>());
+    STATIC_REQUIRE(errors_round_trip<254>());
+    STATIC_REQUIRE(errors_round_trip<255>());
+    STATIC_REQUIRE(errors_round_trip<300>());
+    CHECK(errors_round_trip<4>());  // the run-time paths (no whole-object copies)
+    CHECK(errors_round_trip<254>());
+    CHECK(errors_round_trip<255>());
+    CHECK(errors_round_trip<300>());
+}
+
 TEST_CASE("hex formatting into a caller's buffer", "[core][bytes]") {
     STATIC_REQUIRE(hex_is(abc, "01 5C FF"));
     STATIC_REQUIRE(hex_is(abc, "015CFF", '\0'));

@@ -66,7 +66,7 @@ public:
     using iterator = std::uint8_t*;
     using const_iterator = const std::uint8_t*;
 
-    constexpr bytes() noexcept : data_{}, size_(0) {}
+    constexpr bytes() noexcept : size_(0), data_{} {}
     // Bytes and size unset: for an encoder that then writes all N bytes and
     // calls codec::set_written_size (nothing is cleared first).
     constexpr explicit bytes(codec::unset_t) noexcept {}
@@ -78,7 +78,7 @@ public:
     // A buffer of `n` zero bytes (n clamped to N).
     static constexpr bytes zeros(std::size_t n) noexcept {
         bytes b;
-        b.size_ = n < N ? n : N;
+        b.size_ = static_cast<size_type>(n < N ? n : N);
         return b;
     }
     // Copy of `src`; capacity_exceeded if it does not fit.
@@ -89,7 +89,12 @@ public:
     }
 
     static constexpr std::size_t capacity() noexcept { return N; }
-    constexpr std::size_t size() const noexcept { return size_; }
+    constexpr std::size_t size() const noexcept {
+#if defined(__GNUC__)
+        if (size_ > N) __builtin_unreachable();  // lets the compiler drop paths for longer input
+#endif
+        return size_;
+    }
     constexpr bool empty() const noexcept { return size_ == 0; }
     constexpr std::uint8_t* data() noexcept { return data_.data(); }
     constexpr const std::uint8_t* data() const noexcept { return data_.data(); }
@@ -107,20 +112,24 @@ public:
     // Appends one byte; false (and no change) when full.
     constexpr bool push_back(std::uint8_t b) noexcept {
         if (size_ == N) return false;
-        data_[size_++] = b;
+        data_[size_] = b;
+        ++size_;
         return true;
     }
     // Appends all of src; false (and no change) when it does not fit.
     constexpr bool append(std::span<const std::uint8_t> src) noexcept {
         if (src.size() > N - size_) return false;
-        for (auto b : src) data_[size_++] = b;
+        for (auto b : src) {
+            data_[size_] = b;
+            ++size_;
+        }
         return true;
     }
     // Sets the size; new bytes are zero. Precondition: n <= N.
     constexpr void resize(std::size_t n) noexcept {
         if (n > N) n = N;
         for (std::size_t i = n; i < size_; ++i) data_[i] = 0;
-        size_ = n;
+        size_ = static_cast<size_type>(n);
     }
     constexpr void clear() noexcept { resize(0); }
 
@@ -129,16 +138,47 @@ public:
     }
 
 private:
+    // The smallest type that holds N and one value more (a result's error mark).
+    using size_type =
+        std::conditional_t<(N < 0xFF), std::uint8_t, std::conditional_t<(N < 0xFFFF), std::uint16_t, std::size_t>>;
+    static constexpr size_type no_value = static_cast<size_type>(-1);
+    // The size first: an encoder's store of it joins that of the first byte (often a constant).
+    size_type size_;
     std::array<std::uint8_t, N> data_;  // set by every constructor but bytes(codec::unset_t)
-    std::size_t size_;
     template <std::size_t M>
     friend constexpr void codec::set_written_size(bytes<M>& b, std::size_t n) noexcept;
+    friend struct detail::niche<bytes>;
 };
 
 template <std::size_t N>
 constexpr void codec::set_written_size(bytes<N>& b, std::size_t n) noexcept {
-    b.size_ = n;
+    b.size_ = static_cast<typename bytes<N>::size_type>(n);
 }
+
+// result<bytes<N>> keeps its error in the bytes: a size of no_value, the code
+// and the offset in the first four bytes.
+template <std::size_t N>
+requires(N >= 4) struct detail::niche<bytes<N>> {
+    static constexpr bool used = true;
+    static constexpr bool engaged(const bytes<N>& b) noexcept { return b.size_ != bytes<N>::no_value; }
+    static constexpr void set_error(bytes<N>& b, error e) noexcept {
+        b.size_ = bytes<N>::no_value;
+        const auto code = static_cast<std::uint16_t>(e.code);
+        b.data_[0] = static_cast<std::uint8_t>(code);
+        b.data_[1] = static_cast<std::uint8_t>(code >> 8);
+        b.data_[2] = static_cast<std::uint8_t>(e.offset);
+        b.data_[3] = static_cast<std::uint8_t>(e.offset >> 8);
+    }
+    static constexpr bytes<N> make_error(error e) noexcept {
+        bytes<N> b = std::is_constant_evaluated() ? bytes<N>() : bytes<N>(codec::unset_t{});
+        set_error(b, e);
+        return b;
+    }
+    static constexpr error get_error(const bytes<N>& b) noexcept {
+        return error{static_cast<errc>(b.data_[0] | b.data_[1] << 8),
+                     static_cast<std::uint16_t>(b.data_[2] | b.data_[3] << 8)};
+    }
+};
 
 // Equal when sizes and used bytes are equal (capacities may differ).
 template <std::size_t N, std::size_t M>

@@ -249,9 +249,9 @@ inline constexpr std::size_t variant_max_size_v = detail::max_size_of<Variant>::
 namespace detail::inline ROBOWIRE_MODE_NAMESPACE {
 // Encodes the alternative v holds into out_data (see encode_into);
 // unknown_message (offset 0) for a valueless variant.
-template <class Variant, std::size_t... I>
+template <class Variant, class Written, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr error encode_held(const Variant& v, std::uint8_t* out_data, std::size_t out_size,
-                                                   std::size_t& written, std::index_sequence<I...>) noexcept {
+                                                   Written& written, std::index_sequence<I...>) noexcept {
     error e = fail(errc::unknown_message, 0);
     const std::size_t held = v.index();
     (void)((held == I ? (e = encode_into(*std::get_if<I>(&v), out_data, out_size, written), true) : false) || ...);
@@ -269,10 +269,8 @@ template <class... M>
     using out_t = bytes<variant_max_size_v<std::variant<M...>>>;
     result<out_t> r = detail::in_place_result<out_t>();
     auto& b = codec::unchecked_value(r);  // each message is encoded straight into it
-    std::size_t n = 0;
-    const error e = detail::encode_held(v, b.data(), out_t::capacity(), n, std::index_sequence_for<M...>{});
+    const error e = detail::encode_held(v, b.data(), out_t::capacity(), b, std::index_sequence_for<M...>{});
     if (e.code != errc::ok) r = e;
-    else codec::set_written_size(b, n);
     return r;
 }
 }  // namespace ROBOWIRE_MODE_NAMESPACE

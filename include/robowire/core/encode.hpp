@@ -36,8 +36,13 @@ namespace detail::inline ROBOWIRE_MODE_NAMESPACE {
 // error, if any, is returned in a register and the output is left unchanged.
 // Pointer and size, not a span: a span passed on by value from an inlined
 // caller is copied through the stack first.
-template <described M>
-constexpr error encode_into(const M& m, std::uint8_t* out_data, std::size_t out_size, std::size_t& written) noexcept {
+constexpr void set_written(std::size_t& written, std::size_t n) noexcept { written = n; }
+template <std::size_t N>
+constexpr void set_written(bytes<N>& written, std::size_t n) noexcept {
+    codec::set_written_size(written, n);
+}
+template <described M, class Written>
+constexpr error encode_into(const M& m, std::uint8_t* out_data, std::size_t out_size, Written& written) noexcept {
     const std::span<std::uint8_t> out(out_data, out_size);
     constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
     auto size = encoded_size(m, fields);
@@ -47,6 +52,8 @@ constexpr error encode_into(const M& m, std::uint8_t* out_data, std::size_t out_
     if (codec::unchecked_value(size) > out.size())
         return codec::fail_at(errc::buffer_too_small, codec::unchecked_value(size));
     const auto dst = out.first(codec::unchecked_value(size));
+    // The size first: next to the first byte, which is often fixed; their stores join.
+    set_written(written, codec::unchecked_value(size));
     clear_bytes<M>(dst);
     write_fixed<M>(dst, std::make_index_sequence<fixed_count_v<M>>{});
     if constexpr (sizeof(M) > 16 && !ROBOWIRE_OPTIMIZE_SIZE) {
@@ -56,7 +63,6 @@ constexpr error encode_into(const M& m, std::uint8_t* out_data, std::size_t out_
     } else {
         store_record<M>(m, dst, 0, fields);  // a few bytes: copied as they are
     }
-    written = codec::unchecked_value(size);
     return err;
 }
 }  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE
@@ -81,9 +87,7 @@ template <described M>
     using init = std::conditional_t<min_size_v<M> == max_size_v<M>, codec::unset_t, out_t>;
     result<out_t> r{std::in_place, init{}};
     auto& b = codec::unchecked_value(r);
-    std::size_t n = 0;
-    if (const error e = detail::encode_into(m, b.data(), max_size_v<M>, n); e.code != errc::ok) r = e;
-    else codec::set_written_size(b, n);
+    if (const error e = detail::encode_into(m, b.data(), max_size_v<M>, b); e.code != errc::ok) r = e;
     return r;
 }
 }  // namespace ROBOWIRE_MODE_NAMESPACE

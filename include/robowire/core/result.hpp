@@ -201,6 +201,13 @@ inline void run_time_only() noexcept {}
 template <class T>
 class result;
 namespace detail {
+// A type whose own state can also mark "no value" (bytes<N>: a size past N):
+// result<T> keeps its error inside the value and needs no flag of its own.
+// A specialisation provides engaged(v), make_error(e), set_error(v, e), get_error(v).
+template <class T>
+struct niche {
+    static constexpr bool used = false;
+};
 // Tag of result's value-initialising constructor.
 struct value_init_t {
     explicit value_init_t() = default;
@@ -235,12 +242,14 @@ template <class T>
 class [[nodiscard]] result {
     static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>,
                   "result<T>: T must be trivially copyable and trivially destructible");
+    static constexpr bool in_value_ = detail::niche<T>::used;  // the error lives inside the value
 
 public:
     using value_type = T;
 
     constexpr result(const T& val) noexcept : value_(val), ok_(true) {}
-    constexpr result(robowire::error e) noexcept : error_(e), ok_(false) {}
+    constexpr result(robowire::error e) noexcept requires(!in_value_) : error_(e), ok_(false) {}
+    constexpr result(robowire::error e) noexcept requires(in_value_) : value_(detail::niche<T>::make_error(e)) {}
     // A value-holding result whose value is default-initialised (member
     // initialisers run; nothing is cleared first): for codecs that then write every member.
     constexpr explicit result(std::in_place_t) noexcept(std::is_nothrow_default_constructible_v<T>)
@@ -258,15 +267,23 @@ public:
         : value_(std::in_place, arg), ok_(true) {}
     // Turns this result into an error.
     constexpr result& operator=(robowire::error e) noexcept {
-        if (std::is_constant_evaluated())
-            *this = result(e);  // a whole-object copy switches the active member in a constant expression
-        else ::new (static_cast<void*>(&error_)) robowire::error(e);  // makes the error the active member
-        ok_ = false;
+        if constexpr (in_value_) {
+            if (std::is_constant_evaluated()) *this = result(e);  // every byte set in a constant expression
+            else detail::niche<T>::set_error(value_.v, e);
+        } else {
+            if (std::is_constant_evaluated())
+                *this = result(e);  // a whole-object copy switches the active member in a constant expression
+            else ::new (static_cast<void*>(&error_)) robowire::error(e);  // makes the error the active member
+            ok_ = false;
+        }
         return *this;
     }
 
-    constexpr bool has_value() const noexcept { return ok_; }
-    constexpr explicit operator bool() const noexcept { return ok_; }
+    constexpr bool has_value() const noexcept {
+        if constexpr (in_value_) return detail::niche<T>::engaged(value_.v);
+        else return ok_;
+    }
+    constexpr explicit operator bool() const noexcept { return has_value(); }
 
     // The value. On an error: bad_result_access (exceptions enabled), else
     // ROBOWIRE_BAD_RESULT_ACCESS_HANDLER and a trap; in a constant expression, a compile error.
@@ -292,13 +309,13 @@ public:
     // The error; only valid when !has_value() (else as value() on an error, with errc::ok).
     constexpr robowire::error error() const noexcept(detail::access_noexcept) {
         check(false);
-        return error_;
+        return stored_error();
     }
-    constexpr errc code() const noexcept { return ok_ ? errc::ok : error_.code; }
+    constexpr errc code() const noexcept { return has_value() ? errc::ok : stored_error().code; }
 
     template <class U>
     constexpr T value_or(U&& fallback) const& {
-        return ok_ ? value_.v : static_cast<T>(std::forward<U>(fallback));
+        return has_value() ? value_.v : static_cast<T>(std::forward<U>(fallback));
     }
 
 private:
@@ -310,9 +327,17 @@ private:
     friend constexpr U& detail::build_default(result<U>& r) noexcept;
     template <class U>
     friend constexpr robowire::error codec::unchecked_error(const result<U>& r) noexcept;
+    constexpr robowire::error stored_error() const noexcept {
+        if constexpr (in_value_) return detail::niche<T>::get_error(value_.v);
+        else return error_;
+    }
+    constexpr void set_ok() noexcept {
+        if constexpr (!in_value_) ok_ = true;
+    }
     constexpr void check(bool want_value) const noexcept(detail::access_noexcept) {
-        if (ok_ == want_value) return;
-        const robowire::error e = ok_ ? robowire::error{} : error_;
+        const bool ok = has_value();
+        if (ok == want_value) return;
+        const robowire::error e = ok ? robowire::error{} : stored_error();
         if (std::is_constant_evaluated()) detail::compile_time_bad_access(e.code);
         detail::bad_result_access(e);
     }
@@ -336,10 +361,14 @@ private:
         // On 64-bit hosts a result of 16 bytes or less lives in registers, where
         // GCC merges each new one into the last one's register (a dependency from
         // one decode to the next): at least 17 bytes keep it in memory.
-        unsigned char host_size_[16];
+        unsigned char host_size_[in_value_ ? 17 : 16];
 #endif
     };
-    bool ok_;
+    struct no_flag {
+        no_flag() = default;
+        constexpr no_flag(bool) noexcept {}
+    };
+    [[no_unique_address]] std::conditional_t<in_value_, no_flag, bool> ok_;
 };
 
 template <class T>
@@ -352,7 +381,7 @@ constexpr T& detail::build_value(result<T>& r, const A& arg) noexcept {
         r = result<T>(std::in_place, arg);  // a whole-object copy switches the active member
     } else {
         ::new (static_cast<void*>(&r.value_)) typename result<T>::holder(std::in_place, arg);
-        r.ok_ = true;
+        r.set_ok();
     }
     return r.value_.v;
 }
@@ -362,13 +391,13 @@ constexpr T& detail::build_default(result<T>& r) noexcept {
         r = result<T>(std::in_place);  // a whole-object copy switches the active member
     } else {
         ::new (static_cast<void*>(&r.value_)) typename result<T>::holder(std::in_place);
-        r.ok_ = true;
+        r.set_ok();
     }
     return r.value_.v;
 }
 template <class T>
 constexpr error codec::unchecked_error(const result<T>& r) noexcept {
-    return r.error_;
+    return r.stored_error();
 }
 namespace codec {
 // Makes r hold T(arg), whatever it held (also nothing, after result(unset_t)),

@@ -37,7 +37,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_scalar(E& v, std::span<const std::u
         return true;
     } else {
         std::int64_t raw = 0;
-        if constexpr (W::kind == wire_kind::bits) raw = get_bits(in[off], W::lo, W::width);
+        if constexpr (W::kind == wire_kind::bits)
+            raw = get_bits(load_le<std::uint8_t>(in.data() + off), W::lo, W::width);
         else raw = load_le<typename W::raw_type>(in.data() + off);
         if constexpr (std::is_enum_v<E>) {
             const auto e = static_cast<E>(raw);
