@@ -18,8 +18,8 @@ namespace robowire::osp {
 
 class decode_result;
 namespace impl {
-constexpr void set_frame(decode_result& d, const osp::frame& f) noexcept;
-constexpr osp::frame& frame_of(decode_result& d) noexcept;
+constexpr void set_frame(decode_result& d, const osp::frame* f) noexcept;
+constexpr osp::frame& frame_in_place(decode_result& d) noexcept;
 }  // namespace impl
 inline namespace ROBOWIRE_MODE_NAMESPACE {
 // Decodes one 10-byte frame (below). A template, so that nothing is
@@ -34,20 +34,30 @@ template <class Message = message>
 class decode_result : public result<message> {
 public:
     constexpr decode_result(result<message> r, std::optional<osp::frame> f) noexcept : result<message>(r), frame_(f) {}
-    constexpr explicit decode_result(std::in_place_t) noexcept : result<message>(std::in_place) {}
-    // Neither a message nor an error yet (see result's constructor), no frame.
+    constexpr explicit decode_result(std::in_place_t) noexcept : result<message>(std::in_place), frame_() {}
+    // Neither a message nor an error yet (see result's constructor), and not
+    // even "no frame": for osp::decode, which sets both on every path.
     constexpr explicit decode_result(codec::unset_t u) noexcept : result<message>(u) {}
     using result<message>::operator=;
     constexpr const std::optional<osp::frame>& frame() const noexcept { return frame_; }
 
 private:
-    friend constexpr void impl::set_frame(decode_result& d, const osp::frame& f) noexcept;
-    friend constexpr osp::frame& impl::frame_of(decode_result& d) noexcept;
-    std::optional<osp::frame> frame_;
+    friend constexpr void impl::set_frame(decode_result& d, const osp::frame* f) noexcept;
+    friend constexpr osp::frame& impl::frame_in_place(decode_result& d) noexcept;
+    union {  // in a union: the unset constructor makes no store
+        std::optional<osp::frame> frame_;
+    };
 };
-constexpr void impl::set_frame(decode_result& d, const osp::frame& f) noexcept { d.frame_ = f; }
-// Makes d hold a frame and returns it, to be written in place.
-constexpr osp::frame& impl::frame_of(decode_result& d) noexcept { return d.frame_.emplace(); }
+// Makes d's frame *f, or none for nullptr, whatever it held (also nothing, after decode_result(unset_t)).
+constexpr void impl::set_frame(decode_result& d, const osp::frame* f) noexcept {
+    // a trivial assignment makes frame_ the union's active member
+    d.frame_ = f ? std::optional<osp::frame>(std::in_place, *f) : std::optional<osp::frame>();
+}
+// Makes d hold a frame, whatever it held, and returns it, to be written in place.
+constexpr osp::frame& impl::frame_in_place(decode_result& d) noexcept {
+    d.frame_ = std::optional<osp::frame>(std::in_place);
+    return *d.frame_;
+}
 
 static_assert(sizeof(frame) == 6 && std::is_trivially_copyable_v<frame>, "osp::frame: DEV, CMD, P1..P4, no padding");
 
@@ -147,6 +157,14 @@ ROBOWIRE_SIZE_NOINLINE constexpr void write_frame(bytes<frame_size>& b, std::uin
 }  // namespace impl
 
 namespace impl::inline ROBOWIRE_MODE_NAMESPACE {
+// How decode copies DEV, CMD and P1..P4 fastest: clang++ merges a memcpy into
+// the frame made in place and drops its zeroing; g++ keeps the zeroing, and
+// merges the six byte copies instead.
+#if defined(__clang__)
+inline constexpr bool frame_by_memcpy = true;
+#else
+inline constexpr bool frame_by_memcpy = false;
+#endif
 // decode's work, out of line: the input as pointer and size (a span that an
 // inlined caller passes on by value is copied through the stack first).
 template <class Message>
@@ -156,13 +174,15 @@ constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) no
     // default message first, less code).
     decode_result d = ROBOWIRE_OPTIMIZE_SIZE ? decode_result{std::in_place} : decode_result{codec::unset_t{}};
     if (const error e = check_frame(in)) {
+        set_frame(d, nullptr);
         d = e;
         return d;
     }
-    if (ROBOWIRE_OPTIMIZE_SIZE || std::is_constant_evaluated()) {
-        set_frame(d, osp::frame{in[2], in[3], {in[4], in[5], in[6], in[7]}});
-    } else {  // one wide copy, not six bytes, straight into d
-        std::memcpy(&frame_of(d), data + 2, sizeof(osp::frame));
+    if (ROBOWIRE_OPTIMIZE_SIZE || std::is_constant_evaluated() || !frame_by_memcpy) {
+        const osp::frame f{in[2], in[3], {in[4], in[5], in[6], in[7]}};
+        set_frame(d, &f);
+    } else {  // one wide copy, not six bytes
+        std::memcpy(&frame_in_place(d), data + 2, sizeof(osp::frame));
     }
     decode_by_key(d, static_cast<std::uint16_t>(in[2] << 8 | in[3]), in,
                   std::make_index_sequence<std::variant_size_v<Message>>{});
