@@ -123,17 +123,24 @@ constexpr std::size_t index_of_key(std::uint8_t key) noexcept {
         return key_index_v<Variant, KeyOffset>[key];
     }
 }
-// Makes alternative I of r's variant and decodes `in` into it, in place.
-// Checked: fixed bytes and length checked already (see check_alternative);
-// otherwise they are checked here (but the key) before the alternative is
-// made, so that the fields' stores overwrite its member initialisers with
-// no branch between and the compiler drops them (see decode()).
+// Makes alternative I of r's variant and decodes `in` into it (in place, or
+// through a local: see alternative_via_local). Checked: fixed bytes and
+// length checked already (see check_alternative); otherwise they are checked
+// here (but the key) before the alternative is made, so that the fields'
+// stores overwrite its member initialisers with no branch between and the
+// compiler drops them (see decode()).
 template <std::size_t I, std::size_t KeyOffset, bool Checked, class Variant>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r,
                                                          std::span<const std::uint8_t> in) noexcept {
     if constexpr (!Checked)
         if (!input_ok<KeyOffset, std::variant_alternative_t<I, Variant>>(r, in)) return;
-    if (const error e = decode_body(codec::make_alternative<I>(r), in); e.code != errc::ok) r = e;
+    if constexpr (alternative_via_local && !ROBOWIRE_OPTIMIZE_SIZE) {
+        std::variant_alternative_t<I, Variant> local;
+        if (const error e = decode_body(local, in); e.code != errc::ok) r = e;
+        else codec::make_alternative<I>(r) = local;
+    } else if (const error e = decode_body(codec::make_alternative<I>(r), in); e.code != errc::ok) {
+        r = e;
+    }
 }
 template <std::size_t KeyOffset, bool Checked, class Variant, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_index(result<Variant>& r, std::size_t index,
