@@ -54,12 +54,13 @@ namespace detail::inline ROBOWIRE_MODE_NAMESPACE {
 ROBOWIRE_COLD constexpr error length_error(std::size_t size, std::size_t min, std::size_t max) noexcept {
     return size < min ? codec::fail_at(errc::too_short, size) : codec::fail_at(errc::too_long, max);
 }
-// Where decode() and decode_variant() build the message, the faster way for
-// each compiler (bench/run --instructions): in a local, copied into the result
-// once decoded (no load waits behind a store to the result, which may alias
-// the input, and no member initialiser is stored before a check), or in the
-// result itself. clang++: a message in a local, a variant's alternative in
-// place; g++ the other way round (it copies a whole message member by member).
+// Where decode(), decode_into() and decode_variant() build the message, the
+// faster way for each compiler (bench/run --instructions): in a local, copied
+// out once decoded (no load waits behind a store to the output, which may
+// alias the input, and no member initialiser is stored before a check), or
+// in the output itself. clang++: a message in a local, a variant's
+// alternative in place; g++ the other way round (it copies a whole message
+// member by member).
 #if defined(__clang__)
 inline constexpr bool message_via_local = true, alternative_via_local = false;
 #else
@@ -111,7 +112,14 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const st
 // inlined caller passes on by value is copied through the stack first).
 template <class M>
 constexpr error decode_raw(M& out, const std::uint8_t* data, std::size_t size) noexcept {
-    return decode_checked<no_offset>(out, std::span<const std::uint8_t>(data, size));
+    if constexpr (message_via_local && !ROBOWIRE_OPTIMIZE_SIZE) {
+        M local;
+        const error e = decode_checked<no_offset>(local, std::span<const std::uint8_t>(data, size));
+        if (e.code == errc::ok) out = local;
+        return e;
+    } else {
+        return decode_checked<no_offset>(out, std::span<const std::uint8_t>(data, size));
+    }
 }
 }  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE
 
