@@ -95,4 +95,15 @@ inline constexpr bool plain_byte_array_v = [] {
     }
 }();
 
+// M has no optional, text or tail field: every member is at a fixed place
+// and always decoded (decoded through a local, see alternative_via_local).
+template <class M, std::size_t... I>
+constexpr bool flat_record(std::index_sequence<I...>) noexcept {
+    return ((!field_t<M, I>::is_optional && field_t<M, I>::kind != wire_kind::text &&
+             field_t<M, I>::kind != wire_kind::tail) &&
+            ...);
+}
+template <class M>
+inline constexpr bool flat_record_v = flat_record<M>(std::make_index_sequence<field_count_v<M>>{});
+
 }  // namespace robowire::detail
