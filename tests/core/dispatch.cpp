@@ -25,7 +25,60 @@ constexpr auto table_of(std::type_identity<pong>) {
 using any = std::variant<ping, pong>;
 }  // namespace demo2
 
+// Members that no field covers: kept by the application, never touched by a decode.
+namespace app {
+struct counted {
+    std::uint8_t speed = 0;
+    std::uint32_t received = 0;  // not on the wire
+};
+struct bare {  // no member initialisers: value-initialised in a decoded variant
+    std::uint8_t speed;
+    std::uint32_t app;  // not on the wire
+};
+struct other {
+    std::uint8_t x = 0;
+};
+constexpr auto table_of(std::type_identity<counted>) {
+    using namespace robowire;
+    auto t = make_table<counted>("counted", {{0, 0x30, errc::bad_command}}, field{"speed", &counted::speed, 1, wire::u8{}});
+    t.members_not_on_wire = 1;
+    return t;
+}
+constexpr auto table_of(std::type_identity<bare>) {
+    using namespace robowire;
+    auto t = make_table<bare>("bare", {{0, 0x30, errc::bad_command}}, field{"speed", &bare::speed, 1, wire::u8{}});
+    t.members_not_on_wire = 1;
+    return t;
+}
+constexpr auto table_of(std::type_identity<other>) {
+    using namespace robowire;
+    return make_table<other>("other", {{0, 0x31, errc::bad_command}}, field{"x", &other::x, 1, wire::u8{}});
+}
+using any = std::variant<bare, other>;
+
+// decode_into refreshes the fields and leaves the rest as it was.
+constexpr bool keeps_what_is_not_on_the_wire() {
+    counted m;
+    m.received = 41;
+    const std::uint8_t in[] = {0x30, 7};
+    return robowire::decode_into(m, in).code == robowire::errc::ok && m.speed == 7 && m.received == 41;
+}
+// decode_variant makes the alternative as std::variant(std::in_place_index<I>) does.
+constexpr bool value_initialises_what_is_not_on_the_wire() {
+    const std::uint8_t in[] = {0x30, 7};
+    const auto r = robowire::decode_variant<any>(in);
+    return r && std::get<bare>(*r).speed == 7 && std::get<bare>(*r).app == 0;
+}
+}  // namespace app
+
 using namespace robowire;
+
+TEST_CASE("a decode leaves members that are not on the wire alone", "[core][dispatch]") {
+    STATIC_REQUIRE(app::keeps_what_is_not_on_the_wire());
+    CHECK(app::keeps_what_is_not_on_the_wire());
+    STATIC_REQUIRE(app::value_initialises_what_is_not_on_the_wire());
+    CHECK(app::value_initialises_what_is_not_on_the_wire());
+}
 
 TEST_CASE("decode_variant picks the alternative by its key byte", "[core][dispatch]") {
     STATIC_REQUIRE(std::get<demo2::ping>(decode_variant<demo2::any, 1>(test::hex("A5 01 07")).value()).seq == 7);

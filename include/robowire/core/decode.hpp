@@ -60,7 +60,8 @@ ROBOWIRE_COLD constexpr error length_error(std::size_t size, std::size_t min, st
 // alias the input, and no member initialiser is stored before a check), or
 // in the output itself. clang++: a message in a local, a variant's
 // alternative in place; g++ the other way round (it copies a whole message
-// member by member).
+// member by member). Through a local only if decoding writes every member
+// (decode_writes_every_member_v; for an alternative, flat_record_v).
 #if defined(__clang__)
 inline constexpr bool message_via_local = true, alternative_via_local = false;
 #else
@@ -112,7 +113,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const st
 // inlined caller passes on by value is copied through the stack first).
 template <class M>
 constexpr error decode_raw(M& out, const std::uint8_t* data, std::size_t size) noexcept {
-    if constexpr (message_via_local && !ROBOWIRE_OPTIMIZE_SIZE) {
+    if constexpr (message_via_local && !ROBOWIRE_OPTIMIZE_SIZE && decode_writes_every_member_v<M>) {
         M local;
         const error e = decode_checked<no_offset>(local, std::span<const std::uint8_t>(data, size));
         if (e.code == errc::ok) out = local;
@@ -148,7 +149,7 @@ template <described M>
         return r;
     } else {
         if (!detail::input_ok<detail::no_offset, M>(r, in)) return r;
-        if constexpr (detail::message_via_local) {
+        if constexpr (detail::message_via_local && detail::decode_writes_every_member_v<M>) {
             M local;
             if (const error e = detail::decode_body(local, in); e.code != errc::ok) r = e;
             else detail::build_value(r, local);

@@ -34,29 +34,32 @@ template <class Message = message>
 class decode_result : public result<message> {
 public:
     constexpr decode_result(result<message> r, std::optional<osp::frame> f) noexcept : result<message>(r), frame_(f) {}
-    constexpr explicit decode_result(std::in_place_t) noexcept : result<message>(std::in_place), frame_() {}
+    constexpr explicit decode_result(std::in_place_t) noexcept : result<message>(std::in_place), frame_(std::nullopt) {}
     // Neither a message nor an error yet (see result's constructor), and not
     // even "no frame": for osp::decode, which sets both on every path.
     constexpr explicit decode_result(codec::unset_t u) noexcept : result<message>(u) {}
     using result<message>::operator=;
-    constexpr const std::optional<osp::frame>& frame() const noexcept { return frame_; }
+    constexpr const std::optional<osp::frame>& frame() const noexcept { return frame_.f; }
 
 private:
     friend constexpr void impl::set_frame(decode_result& d, const osp::frame* f) noexcept;
     friend constexpr osp::frame& impl::frame_in_place(decode_result& d) noexcept;
-    union {  // in a union: the unset constructor makes no store
-        std::optional<osp::frame> frame_;
+    union slot {  // a union: the unset constructor makes no store
+        std::optional<osp::frame> f;
+        constexpr slot() noexcept {}  // nothing yet
+        constexpr slot(const std::optional<osp::frame>& x) noexcept : f(x) {}
     };
+    slot frame_;
 };
 // Makes d's frame *f, or none for nullptr, whatever it held (also nothing, after decode_result(unset_t)).
 constexpr void impl::set_frame(decode_result& d, const osp::frame* f) noexcept {
-    // a trivial assignment makes frame_ the union's active member
+    // a whole-union copy: its member becomes the active one, also in a constant expression
     d.frame_ = f ? std::optional<osp::frame>(std::in_place, *f) : std::optional<osp::frame>();
 }
 // Makes d hold a frame, whatever it held, and returns it, to be written in place.
 constexpr osp::frame& impl::frame_in_place(decode_result& d) noexcept {
     d.frame_ = std::optional<osp::frame>(std::in_place);
-    return *d.frame_;
+    return *d.frame_.f;
 }
 
 static_assert(sizeof(frame) == 6 && std::is_trivially_copyable_v<frame>, "osp::frame: DEV, CMD, P1..P4, no padding");

@@ -95,8 +95,13 @@ inline constexpr bool plain_byte_array_v = [] {
     }
 }();
 
+// Decoding M writes every member: none is outside the table, but
+// ignored_trailing_bytes, which decode sets. A decoder may then decode into
+// a local and copy it whole into the output (see message_via_local).
+template <class M>
+inline constexpr bool decode_writes_every_member_v = table_v<M>.members_not_on_wire == (reports_trailing<M> ? 1u : 0u);
 // M has no optional, text or tail field: every member is at a fixed place
-// and always decoded (decoded through a local, see alternative_via_local).
+// (decoded through a local, see alternative_via_local).
 template <class M, std::size_t... I>
 constexpr bool flat_record(std::index_sequence<I...>) noexcept {
     return ((!field_t<M, I>::is_optional && field_t<M, I>::kind != wire_kind::text &&
@@ -104,6 +109,7 @@ constexpr bool flat_record(std::index_sequence<I...>) noexcept {
             ...);
 }
 template <class M>
-inline constexpr bool flat_record_v = flat_record<M>(std::make_index_sequence<field_count_v<M>>{});
+inline constexpr bool flat_record_v =
+    decode_writes_every_member_v<M>&& flat_record<M>(std::make_index_sequence<field_count_v<M>>{});
 
 }  // namespace robowire::detail
