@@ -96,6 +96,7 @@ public:
         return size_;
     }
     constexpr bool empty() const noexcept { return size_ == 0; }
+    // The bytes; aligned to 1 only (the size is stored before them).
     constexpr std::uint8_t* data() noexcept { return data_.data(); }
     constexpr const std::uint8_t* data() const noexcept { return data_.data(); }
     constexpr iterator begin() noexcept { return data_.data(); }
