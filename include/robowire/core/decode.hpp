@@ -153,6 +153,8 @@ template <described M>
             M local;
             if (const error e = detail::decode_body(local, in); e.code != errc::ok) r = e;
             else detail::build_value(r, local);
+        } else if constexpr (detail::flat_record_v<M>) {  // every member written: no initialiser stored first
+            if (const error e = detail::decode_body(detail::build_unset(r), in); e.code != errc::ok) r = e;
         } else if (const error e = detail::decode_body(detail::build_default(r), in); e.code != errc::ok) {
             r = e;
         }

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>  // std::memmove
 #if defined(__cpp_exceptions)
 #include <exception>  // std::exception
 #endif
@@ -234,6 +235,11 @@ constexpr T& build_value(result<T>& r, const A& arg) noexcept;
 // Makes r hold a default-initialised T (member initialisers run), whatever it held.
 template <class T>
 constexpr T& build_default(result<T>& r) noexcept;
+// Makes r hold a T whose members are not initialised (at run time; in a
+// constant expression, default-initialised), for a codec that then writes
+// every member. T: trivially copyable (an implicit-lifetime type).
+template <class T>
+constexpr T& build_unset(result<T>& r) noexcept;
 }  // namespace detail
 
 // Either a T or an error; they share storage. T must be trivially copyable
@@ -326,6 +332,8 @@ private:
     template <class U>
     friend constexpr U& detail::build_default(result<U>& r) noexcept;
     template <class U>
+    friend constexpr U& detail::build_unset(result<U>& r) noexcept;
+    template <class U>
     friend constexpr robowire::error codec::unchecked_error(const result<U>& r) noexcept;
     constexpr robowire::error stored_error() const noexcept {
         if constexpr (in_value_) return detail::niche<T>::get_error(value_.v);
@@ -393,6 +401,14 @@ constexpr T& detail::build_default(result<T>& r) noexcept {
         ::new (static_cast<void*>(&r.value_)) typename result<T>::holder(std::in_place);
         r.set_ok();
     }
+    return r.value_.v;
+}
+template <class T>
+constexpr T& detail::build_unset(result<T>& r) noexcept {
+    if (std::is_constant_evaluated()) return build_default(r);
+    // memmove implicitly creates the (implicit-lifetime) holder in the storage; no store
+    std::memmove(static_cast<void*>(&r.value_), static_cast<const void*>(&r.value_), sizeof(r.value_));
+    r.set_ok();
     return r.value_.v;
 }
 template <class T>

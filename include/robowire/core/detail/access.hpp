@@ -100,16 +100,27 @@ inline constexpr bool plain_byte_array_v = [] {
 // a local and copy it whole into the output (see message_via_local).
 template <class M>
 inline constexpr bool decode_writes_every_member_v = table_v<M>.members_not_on_wire == (reports_trailing<M> ? 1u : 0u);
-// M has no optional, text or tail field: every member is at a fixed place
-// (decoded through a local, see alternative_via_local).
-template <class M, std::size_t... I>
-constexpr bool flat_record(std::index_sequence<I...>) noexcept {
-    return ((!field_t<M, I>::is_optional && field_t<M, I>::kind != wire_kind::text &&
-             field_t<M, I>::kind != wire_kind::tail) &&
-            ...);
+// M has no optional, text or tail field, nor a record that has one, and
+// decoding writes every member: each member is at a fixed place and written
+// by a decode (which may then skip the member initialisers, or go through
+// a local: see alternative_via_local).
+template <class M>
+constexpr bool flat_record() noexcept;
+template <class M, std::size_t I>
+constexpr bool flat_field() noexcept {
+    using F = field_t<M, I>;
+    if constexpr (F::is_optional || F::kind == wire_kind::text || F::kind == wire_kind::tail) return false;
+    else if constexpr (F::kind == wire_kind::record) return flat_record<typename F::element_type>();
+    else return true;
 }
 template <class M>
-inline constexpr bool flat_record_v =
-    decode_writes_every_member_v<M>&& flat_record<M>(std::make_index_sequence<field_count_v<M>>{});
+constexpr bool flat_record() noexcept {
+    return decode_writes_every_member_v<M>&&[]<std::size_t... I>(std::index_sequence<I...>) {
+        return (flat_field<M, I>() && ...);
+    }
+    (std::make_index_sequence<field_count_v<M>>{});
+}
+template <class M>
+inline constexpr bool flat_record_v = flat_record<M>();
 
 }  // namespace robowire::detail
