@@ -5,6 +5,7 @@
 
 #include "../core/config.hpp"  // first: the C++ version check
 
+#include <array>
 #include <cstring>
 #include <optional>
 #include <span>
@@ -128,13 +129,47 @@ template <std::size_t I>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_message(decode_result& d, std::span<const std::uint8_t> in) noexcept {
     if (const error e = codec::decode_fields(codec::make_alternative<I>(d), in); e.code != errc::ok) d = e;
 }
+// The message whose key is `key`, by one compare per message (less code).
 template <std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::uint16_t key,
-                                                    std::span<const std::uint8_t> in,
-                                                    std::index_sequence<I...>) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key_chain(decode_result& d, std::uint16_t key,
+                                                          std::span<const std::uint8_t> in,
+                                                          std::index_sequence<I...>) noexcept {
     const bool known =
         ((key == key_of<std::variant_alternative_t<I, message>>() ? (decode_message<I>(d, in), true) : false) || ...);
     if (!known) d = fail(errc::unknown_message, 2);
+}
+// (key, alternative index) of each alternative, sorted by key.
+template <class Message>
+inline constexpr auto sorted_keys_v = [] {
+    constexpr std::size_t n = std::variant_size_v<Message>;
+    std::array<std::array<std::uint16_t, 2>, n> k{};
+    for (std::size_t i = 0; i < n; ++i) k[i] = {keys_v<Message>[i], static_cast<std::uint16_t>(i)};
+    for (std::size_t i = 1; i < n; ++i)
+        for (std::size_t j = i; j > 0 && k[j - 1][0] > k[j][0]; --j) std::swap(k[j - 1], k[j]);
+    return k;
+}();
+// A compare tree over sorted_keys_v[Lo, Hi).
+template <std::size_t Lo, std::size_t Hi>
+ROBOWIRE_ALWAYS_INLINE constexpr void decode_in_range(decode_result& d, std::uint16_t key,
+                                                      std::span<const std::uint8_t> in) noexcept {
+    constexpr auto& k = sorted_keys_v<message>;
+    if constexpr (Hi - Lo == 1) {
+        if (key == k[Lo][0]) decode_message<k[Lo][1]>(d, in);
+        else d = fail(errc::unknown_message, 2);
+    } else {
+        constexpr std::size_t mid = Lo + (Hi - Lo) / 2;
+        if (key < k[mid][0]) decode_in_range<Lo, mid>(d, key, in);
+        else decode_in_range<mid, Hi>(d, key, in);
+    }
+}
+// The message whose key (DEV << 8 | CMD) is `key`, or unknown_message. At speed, a
+// compare tree: g++ turns the chain into a jump table, whose load costs more.
+template <std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::uint16_t key,
+                                                    std::span<const std::uint8_t> in,
+                                                    std::index_sequence<I...> all) noexcept {
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) decode_by_key_chain(d, key, in, all);
+    else decode_in_range<0, sizeof...(I)>(d, key, in);
 }
 // Checks m's fields and writes them into `out` (FF AA DEV CMD 00 00 00 00 55 77 written already).
 template <class M>
