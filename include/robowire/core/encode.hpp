@@ -32,6 +32,13 @@ ROBOWIRE_ALWAYS_INLINE constexpr void store_fields(const M& m, std::span<std::ui
 }  // namespace codec::inline ROBOWIRE_MODE_NAMESPACE
 
 namespace detail::inline ROBOWIRE_MODE_NAMESPACE {
+// The first of m's fields that fails its check (m fails one).
+template <described M>
+ROBOWIRE_COLD constexpr error field_error(const M& m) noexcept {
+    error err{};
+    (void)check_record<M>(m, 0, err, std::make_index_sequence<field_count_v<M>>{});
+    return err;
+}
 // Encodes m into out_data (at most out_size bytes) and sets `written`: the
 // error, if any, is returned in a register and the output is left unchanged.
 // Pointer and size, not a span: a span passed on by value from an inlined
@@ -47,8 +54,14 @@ constexpr error encode_into(const M& m, std::uint8_t* out_data, std::size_t out_
     constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
     auto size = encoded_size(m, fields);
     if (!size) return codec::unchecked_error(size);
-    error err{};
-    if (!check_record<M>(m, 0, err, fields)) return err;
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
+        error err{};
+        if (!check_record<M>(m, 0, err, fields)) return err;
+    } else {  // the checks as one yes/no; which one failed, out of line: no error set up on the good path
+        no_error ignore;
+        if (!check_record<M>(m, 0, ignore, fields)) [[unlikely]]
+            return field_error(m);
+    }
     if (codec::unchecked_value(size) > out.size())
         return codec::fail_at(errc::buffer_too_small, codec::unchecked_value(size));
     const auto dst = out.first(codec::unchecked_value(size));
@@ -63,7 +76,7 @@ constexpr error encode_into(const M& m, std::uint8_t* out_data, std::size_t out_
     } else {
         store_record<M>(m, dst, 0, fields);  // a few bytes: copied as they are
     }
-    return err;
+    return error{};
 }
 }  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE
 

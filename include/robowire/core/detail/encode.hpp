@@ -25,10 +25,15 @@ namespace robowire::detail::inline ROBOWIRE_MODE_NAMESPACE {
 // ---- encode, in two passes: check every field (the first error wins), then
 // write them all without a branch, so that the stores can merge.
 
+// An error report that keeps nothing: the checks as one yes/no (see encode_into).
+struct no_error {
+    constexpr no_error& operator=(const error&) noexcept { return *this; }
+};
+
 // Checks and stores of a number, enum, bool or float of wire type W, valid in
 // [Min, Max]: shared by every field of the same kind and range.
 template <class W, std::int64_t Min, std::int64_t Max, class E>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_scalar(const E& v, std::size_t off, error& err) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_scalar(const E& v, std::size_t off, auto& err) noexcept {
     if constexpr (W::kind == wire_kind::f32le) {
         return true;
     } else if constexpr (std::is_enum_v<E>) {
@@ -73,14 +78,14 @@ ROBOWIRE_ALWAYS_INLINE constexpr void store_scalar(const E& v, std::span<std::ui
 }
 
 template <class M, std::size_t I, class E>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off, error& err) noexcept;
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off, auto& err) noexcept;
 
 template <class M, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(const M& m, std::size_t base, error& err,
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(const M& m, std::size_t base, auto& err,
                                                    std::index_sequence<I...>) noexcept;
 
 template <class M, std::size_t I, class V, std::size_t... K>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_array(const V& v, std::size_t off, error& err,
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_array(const V& v, std::size_t off, auto& err,
                                                   std::index_sequence<K...>) noexcept {
     constexpr std::size_t es = field_t<M, I>::element_size;
     if constexpr (encode_in_loop<field_t<M, I>>()) {
@@ -95,14 +100,14 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_array(const V& v, std::size_t off, e
 }
 
 template <class M, std::size_t I, class V>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_value(const V& v, std::size_t off, error& err) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_value(const V& v, std::size_t off, auto& err) noexcept {
     using F = field_t<M, I>;
     if constexpr (F::is_array) return check_array<M, I>(v, off, err, std::make_index_sequence<F::count>{});
     else return check_element<M, I>(v, off, err);
 }
 
 template <class M, std::size_t I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_field(const M& m, std::size_t base, error& err) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_field(const M& m, std::size_t base, auto& err) noexcept {
     const std::size_t off = base + field_v<M, I>.offset;
     constexpr auto member_ptr = field_v<M, I>.member;
     const auto& member = m.*member_ptr;
@@ -114,14 +119,14 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_field(const M& m, std::size_t base, 
 }
 
 template <class M, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(const M& m, std::size_t base, error& err,
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(const M& m, std::size_t base, auto& err,
                                                    std::index_sequence<I...>) noexcept {
     (void)m, (void)base, (void)err;  // messages without fields
     return (check_field<M, I>(m, base, err) && ...);
 }
 
 template <class M, std::size_t I, class E>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off, error& err) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off, auto& err) noexcept {
     using W = typename field_t<M, I>::wire_type;
     if constexpr (W::kind == wire_kind::record) {
         return check_record<E>(v, off, err, std::make_index_sequence<field_count_v<E>>{});
