@@ -103,6 +103,13 @@ struct out_of_range {
     std::uint8_t per_256 = 8;
 };
 
+// g++ -O3 may report a disengaged std::optional's payload, copied with the
+// message that make() returns, as maybe uninitialised (libstdc++'s optional
+// leaves it unset by design): a false positive, silenced here only.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 namespace detail {
 using robowire::detail::element_t;
 
@@ -273,6 +280,9 @@ constexpr T make(source& s, std::uint8_t bad) noexcept {
     }
 }
 }  // namespace detail
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
 
 // A message of type M (a described message, or a std::variant of them: the
 // next byte, modulo the number of alternatives, picks one) made from the

@@ -55,6 +55,42 @@ constexpr auto table_of(std::type_identity<other>) {
     return make_table<other>("other", {{0, 0x31, errc::bad_command}}, field{"x", &other::x, 1, wire::u8{}});
 }
 using any = std::variant<bare, other>;
+// Tables whose member count check cannot see a member left out: a decode
+// must keep its member initialiser, as for a member outside the table.
+struct with_ctor {  // not an aggregate: the member count is not checked
+    std::uint8_t speed = 0;
+    std::uint8_t retries = 3;  // no field
+    constexpr with_ctor() = default;
+    constexpr explicit with_ctor(std::uint8_t s) : speed(s) {}
+};
+struct named_twice {  // two fields, two members, one of them never written
+    std::uint8_t lo = 0;
+    std::uint8_t mode = 9;
+};
+struct header {
+    std::uint8_t channel = 0;
+    std::uint8_t retries = 3;  // no field
+};
+struct derived : header {  // the base counts as one member
+    std::uint8_t speed = 0;
+};
+constexpr auto table_of(std::type_identity<with_ctor>) {
+    using namespace robowire;
+    return make_table<with_ctor>("with_ctor", {{0, 0xA5, errc::bad_header}},
+                                 field{"speed", &with_ctor::speed, 1, wire::u8{}});
+}
+constexpr auto table_of(std::type_identity<named_twice>) {
+    using namespace robowire;
+    return make_table<named_twice>("named_twice", {{0, 0xA6, errc::bad_header}},
+                                   field{"lo", &named_twice::lo, 1, wire::u8{}},
+                                   field{"lo_again", &named_twice::lo, 2, wire::u8{}});
+}
+constexpr auto table_of(std::type_identity<derived>) {
+    using namespace robowire;
+    return make_table<derived>("derived", {{0, 0xA7, errc::bad_header}}, field{"channel", &derived::channel, 1, wire::u8{}},
+                               field{"speed", &derived::speed, 2, wire::u8{}});
+}
+constexpr std::uint8_t with_ctor_in[] = {0xA5, 42}, named_twice_in[] = {0xA6, 5, 5}, derived_in[] = {0xA7, 1, 42};
 
 // decode_into refreshes the fields and leaves the rest as it was.
 constexpr bool keeps_what_is_not_on_the_wire() {
@@ -78,6 +114,15 @@ TEST_CASE("a decode leaves members that are not on the wire alone", "[core][disp
     STATIC_REQUIRE(!robowire::detail::flat_record_v<app::counted>);
     STATIC_REQUIRE(!robowire::detail::flat_record_v<app::bare>);
     STATIC_REQUIRE(robowire::detail::flat_record_v<app::other>);
+    STATIC_REQUIRE(!robowire::detail::flat_record_v<app::with_ctor>);
+    STATIC_REQUIRE(!robowire::detail::flat_record_v<app::named_twice>);
+    STATIC_REQUIRE(!robowire::detail::flat_record_v<app::derived>);
+    STATIC_REQUIRE(robowire::decode<app::with_ctor>(app::with_ctor_in)->retries == 3);
+    STATIC_REQUIRE(robowire::decode<app::named_twice>(app::named_twice_in)->mode == 9);
+    STATIC_REQUIRE(robowire::decode<app::derived>(app::derived_in)->retries == 3);
+    CHECK(robowire::decode<app::with_ctor>(app::with_ctor_in)->retries == 3);
+    CHECK(robowire::decode<app::named_twice>(app::named_twice_in)->mode == 9);
+    CHECK(robowire::decode<app::derived>(app::derived_in)->retries == 3);
     STATIC_REQUIRE(app::keeps_what_is_not_on_the_wire());
     CHECK(app::keeps_what_is_not_on_the_wire());
     STATIC_REQUIRE(app::value_initialises_what_is_not_on_the_wire());

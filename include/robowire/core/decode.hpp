@@ -114,7 +114,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const st
 template <class M>
 constexpr error decode_raw(M& out, const std::uint8_t* data, std::size_t size) noexcept {
     if constexpr (message_via_local && !ROBOWIRE_OPTIMIZE_SIZE && decode_writes_every_member_v<M>) {
-        M local;
+        M local{};
         const error e = decode_checked<no_offset>(local, std::span<const std::uint8_t>(data, size));
         if (e.code == errc::ok) out = local;
         return e;
@@ -150,7 +150,7 @@ template <described M>
     } else {
         if (!detail::input_ok<detail::no_offset, M>(r, in)) return r;
         if constexpr (detail::message_via_local && detail::decode_writes_every_member_v<M>) {
-            M local;
+            M local{};
             if (const error e = detail::decode_body(local, in); e.code != errc::ok) r = e;
             else detail::build_value(r, local);
         } else if constexpr (detail::flat_record_v<M>) {  // every member written: no initialiser stored first

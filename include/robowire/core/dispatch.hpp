@@ -136,7 +136,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r,
         if (!input_ok<KeyOffset, std::variant_alternative_t<I, Variant>>(r, in)) return;
     if constexpr (alternative_via_local && !ROBOWIRE_OPTIMIZE_SIZE &&
                   flat_record_v<std::variant_alternative_t<I, Variant>>) {
-        std::variant_alternative_t<I, Variant> local;
+        std::variant_alternative_t<I, Variant> local{};
         if (const error e = decode_body(local, in); e.code != errc::ok) r = e;
         else codec::make_alternative<I>(r) = local;
     } else if (const error e = decode_body(codec::make_alternative<I>(r), in); e.code != errc::ok) {

@@ -95,11 +95,34 @@ inline constexpr bool plain_byte_array_v = [] {
     }
 }();
 
-// Decoding M writes every member: none is outside the table, but
-// ignored_trailing_bytes, which decode sets. A decoder may then decode into
-// a local and copy it whole into the output (see message_via_local).
+// Two fields name the same member (member pointers of different types never do).
+template <class P, class Q>
+constexpr bool same_member(P p, Q q) noexcept {
+    if constexpr (std::is_same_v<P, Q>) return p == q;
+    else return false;
+}
+template <class M, std::size_t A, std::size_t... I>
+constexpr bool names_again(std::index_sequence<I...>) noexcept {
+    return ((A < I && same_member(field_v<M, A>.member, field_v<M, I>.member)) || ...);
+}
+template <class M, std::size_t... I>
+constexpr bool distinct_members(std::index_sequence<I...> all) noexcept {
+    (void)all;  // messages without fields
+    return (!names_again<M, I>(all) && ...);
+}
+// Decoding M writes every member: M is a standard-layout aggregate (no
+// base with members, no constructor), its fields name distinct members, and
+// none is outside the table but ignored_trailing_bytes, which decode sets.
+// A decoder may then skip the member initialisers, or decode into a local
+// and copy it whole into the output (see message_via_local).
 template <class M>
-inline constexpr bool decode_writes_every_member_v = table_v<M>.members_not_on_wire == (reports_trailing<M> ? 1u : 0u);
+constexpr bool decode_writes_every_member() noexcept {
+    if constexpr (!std::is_aggregate_v<M> || !std::is_standard_layout_v<M>) return false;
+    else if constexpr (table_v<M>.members_not_on_wire != (reports_trailing<M> ? 1u : 0u)) return false;
+    else return distinct_members<M>(std::make_index_sequence<field_count_v<M>>{});
+}
+template <class M>
+inline constexpr bool decode_writes_every_member_v = decode_writes_every_member<M>();
 // M has no optional, text or tail field, nor a record that has one, and
 // decoding writes every member: each member is at a fixed place and written
 // by a decode (which may then skip the member initialisers, or go through
