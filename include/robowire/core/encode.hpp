@@ -16,12 +16,31 @@
 
 namespace robowire {
 
+namespace detail::inline ROBOWIRE_MODE_NAMESPACE {
+// The first of m's fields that fails its check (m fails one).
+template <described M>
+ROBOWIRE_COLD constexpr error field_error(const M& m) noexcept {
+    error err{};
+    (void)check_record<M>(m, 0, err, std::make_index_sequence<field_count_v<M>>{});
+    return err;
+}
+}  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE
+
 namespace codec::inline ROBOWIRE_MODE_NAMESPACE {
 // Checks M's fields in m (ranges, enums, text without NUL), in table order:
 // false at the first error, which is stored in err. Pair with store_fields.
 template <described M>
 ROBOWIRE_ALWAYS_INLINE constexpr bool check_fields(const M& m, error& err) noexcept {
-    return detail::check_record<M>(m, 0, err, std::make_index_sequence<detail::field_count_v<M>>{});
+    constexpr auto fields = std::make_index_sequence<detail::field_count_v<M>>{};
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
+        return detail::check_record<M>(m, 0, err, fields);
+    } else {  // as one yes/no; which one failed, out of line: no error set up on the good path
+        detail::no_error ignore;
+        if (detail::check_record<M>(m, 0, ignore, fields)) [[likely]]
+            return true;
+        err = detail::field_error(m);
+        return false;
+    }
 }
 // Writes M's fields of m, checked by check_fields, into `out` (at least
 // max_size_v<M> bytes; fixed and reserved bytes are not written).
@@ -32,13 +51,6 @@ ROBOWIRE_ALWAYS_INLINE constexpr void store_fields(const M& m, std::span<std::ui
 }  // namespace codec::inline ROBOWIRE_MODE_NAMESPACE
 
 namespace detail::inline ROBOWIRE_MODE_NAMESPACE {
-// The first of m's fields that fails its check (m fails one).
-template <described M>
-ROBOWIRE_COLD constexpr error field_error(const M& m) noexcept {
-    error err{};
-    (void)check_record<M>(m, 0, err, std::make_index_sequence<field_count_v<M>>{});
-    return err;
-}
 // Encodes m into out_data (at most out_size bytes) and sets `written`: the
 // error, if any, is returned in a register and the output is left unchanged.
 // Pointer and size, not a span: a span passed on by value from an inlined
@@ -54,14 +66,7 @@ constexpr error encode_into(const M& m, std::uint8_t* out_data, std::size_t out_
     constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
     auto size = encoded_size(m, fields);
     if (!size) return codec::unchecked_error(size);
-    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
-        error err{};
-        if (!check_record<M>(m, 0, err, fields)) return err;
-    } else {  // the checks as one yes/no; which one failed, out of line: no error set up on the good path
-        no_error ignore;
-        if (!check_record<M>(m, 0, ignore, fields)) [[unlikely]]
-            return field_error(m);
-    }
+    if (error err{}; !codec::check_fields(m, err)) return err;
     if (codec::unchecked_value(size) > out.size())
         return codec::fail_at(errc::buffer_too_small, codec::unchecked_value(size));
     const auto dst = out.first(codec::unchecked_value(size));
