@@ -1,6 +1,8 @@
 #include <robowire/buwizz3/commands.hpp>
 #include <robowire/buwizz3/decode.hpp>
 
+#include <algorithm>
+
 #include <catch2/catch.hpp>
 
 #include "check.hpp"
@@ -213,6 +215,34 @@ TEST_CASE("buwizz3: decode_command and decode_notification dispatch", "[buwizz3]
     STATIC_REQUIRE(decode_notification(test::hex("30 00")).error() == error{errc::unknown_message, 0});
     STATIC_REQUIRE(decode_command(test::hex("30 00")).error() == error{errc::too_short, 2});
     CHECK(decode_command(test::hex("23 00")).error() == error{errc::too_long, 1});
+}
+
+TEST_CASE("buwizz3: decode_command at run time, every first byte", "[buwizz3][commands]") {
+    // The 20 command bytes of the BuWizz3 document; every other byte is unknown_message at 0.
+    constexpr std::array<std::uint8_t, 20> commands{0x20, 0x21, 0x22, 0x23, 0x30, 0x31, 0x32, 0x33, 0x34, 0x35,
+                                                    0x36, 0x37, 0x38, 0x40, 0x50, 0x51, 0x52, 0x53, 0xA1, 0xAC};
+    // Notifications: 0x01 status report, 0x23 accelerometer calibration, 0xAC charger settings.
+    constexpr std::array<std::uint8_t, 3> notifications{0x01, 0x23, 0xAC};
+    std::array<std::uint8_t, 64> in{};
+    for (std::size_t k = 0; k < 256; ++k) {
+        in[0] = static_cast<std::uint8_t>(k);
+        const bool is_command = std::find(commands.begin(), commands.end(), k) != commands.end();
+        const bool is_notification = std::find(notifications.begin(), notifications.end(), k) != notifications.end();
+        for (std::size_t n : {std::size_t{1}, std::size_t{9}, in.size()}) {
+            const auto c = decode_command(std::span<const std::uint8_t>(in.data(), n));
+            const auto s = decode_notification(std::span<const std::uint8_t>(in.data(), n));
+            INFO("first byte " << k << ", " << n << " bytes");
+            CHECK((c.code() == errc::unknown_message) == !is_command);
+            CHECK((s.code() == errc::unknown_message) == !is_notification);
+            if (c.code() == errc::unknown_message) CHECK(c.error().offset == 0);
+            if (s.code() == errc::unknown_message) CHECK(s.error().offset == 0);
+        }
+    }
+    // Each known byte reaches its own alternative, not a neighbour's.
+    CHECK(std::holds_alternative<set_led_status>(decode_command(test::hex("36")).value()));
+    CHECK(std::holds_alternative<check_charger_settings>(decode_command(test::hex("AC")).value()));
+    CHECK(std::holds_alternative<activate_shelf_mode>(decode_command(test::hex("A1")).value()));
+    CHECK(std::holds_alternative<read_accel_calibration>(decode_command(test::hex("23")).value()));
 }
 
 TEST_CASE("buwizz3: every command and notification round trips through its variant", "[buwizz3][commands]") {

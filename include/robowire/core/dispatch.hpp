@@ -69,6 +69,15 @@ ROBOWIRE_ALWAYS_INLINE constexpr auto& make_alternative(result<Variant>& r) noex
 }  // namespace codec::inline ROBOWIRE_MODE_NAMESPACE
 
 namespace detail {
+// Tells the compiler that this point is never reached (a value out of range).
+ROBOWIRE_ALWAYS_INLINE constexpr void unreachable() noexcept {
+    if (std::is_constant_evaluated()) return;
+#if defined(__GNUC__)
+    __builtin_unreachable();
+#elif defined(_MSC_VER)
+    __assume(false);
+#endif
+}
 // Not constexpr: reached at compile time, it is the compile error (two
 // alternatives of a variant have the same key: the second could never be decoded).
 inline void variant_alternatives_share_a_key(std::string_view /*first_alternative*/, int /*key*/) noexcept {}
@@ -151,6 +160,16 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_index(result<Variant>& r, std::size
     return ((index == I ? (decode_alternative<I, KeyOffset, Checked>(r, in), true) : false) || ...);
 }
 
+// The same for a key's index from key_index_v: one more case for an unknown
+// key (variant_size), and no other value, so the jump table needs no range check.
+template <std::size_t KeyOffset, class Variant, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr void decode_key_index(result<Variant>& r, std::size_t index,
+                                                       std::span<const std::uint8_t> in,
+                                                       std::index_sequence<I...>) noexcept {
+    (void)((index == I ? (decode_alternative<I, KeyOffset, false>(r, in), true) : false) || ... ||
+           (index == sizeof...(I) ? (r = fail(errc::unknown_message, KeyOffset), true) : (unreachable(), false)));
+}
+
 // Input sizes (min, max) of each alternative, in flash: one length check for
 // all of them under ROBOWIRE_OPTIMIZE_SIZE, instead of one per alternative.
 // Bytes when every size fits (tables keep sizes below 65536).
@@ -219,9 +238,9 @@ ROBOWIRE_SPEED_INLINE constexpr result<Variant> decode_variant_at(const std::uin
         else if (const error e = check_alternative<Variant, KeyOffset>(index, in, all); e.code != errc::ok) r = e;
         else decode_index<KeyOffset, true>(r, index, in, all);
     } else {
-        // An unknown key is the jump table's default: one range check for both.
+        // An unknown key is one more case of the jump table: no range check.
         const std::size_t index = index_of_key<Variant, KeyOffset>(in[KeyOffset]);
-        if (!decode_index<KeyOffset, false>(r, index, in, all)) r = fail(errc::unknown_message, KeyOffset);
+        decode_key_index<KeyOffset>(r, index, in, all);
     }
     return r;
 }
