@@ -11,6 +11,8 @@ import sys
 import tempfile
 
 check = pathlib.Path(__file__).resolve().parent / "check"
+if len(sys.argv) != 3:
+    sys.exit(__doc__)
 current, committed = sys.argv[1], sys.argv[2]
 base = json.loads(pathlib.Path(committed).read_text())
 failed = []
