@@ -6,6 +6,9 @@
 // check every field, then the buffer's size, before writing any byte.
 #include <robowire/buwizz3.hpp>
 
+#include <bit>
+#include <cstddef>
+
 #include "common.hpp"
 
 namespace {
@@ -80,6 +83,46 @@ hw::error hw_decode_status(const std::uint8_t* p, std::size_t n, hw_status& s) {
     return hw::good;
 }
 
+// The careful decoder: into robowire's own struct (its layout checked below),
+// whose members hold the wire's runs on a little-endian host, so a copy per
+// run decodes them; the length forms and the command byte in one test, the
+// exact error in a cold function (robowire's order: command, length, PID
+// block). On an error `s` is left as it was.
+static_assert(std::endian::native == std::endian::little, "the careful baselines copy little-endian runs");
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Winvalid-offsetof"
+#endif
+static_assert(offsetof(bw::status, flags) == 0 && offsetof(bw::status, temperature_c) == 8 &&
+              offsetof(bw::status, accel_raw) == 10 && offsetof(bw::status, charge_current_ma) == 21 &&
+              offsetof(bw::status, pu_motors) == 24 && sizeof(bw::pu_motor) == 8 &&
+              offsetof(bw::pid_state, integrator) == 12);
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+[[gnu::cold, gnu::noinline]] hw::error careful_status_error(const std::uint8_t* p, std::size_t n) {
+    if (n > 0 && p[0] != 0x01) return hw::fail(hw::bad_command, 0);
+    if (n < 54) return hw::fail(hw::too_short, n);
+    if (n > 129) return hw::fail(hw::too_long, 129);
+    return hw::fail(hw::bad_length, 54);
+}
+inline hw::error careful_decode_status(const std::uint8_t* p, std::size_t n, bw::status& s) {
+    if (n - 54 > 129 - 54 || (n > 54 && n < 68) || p[0] != 0x01) [[unlikely]]
+        return careful_status_error(p, n);
+    auto* o = reinterpret_cast<unsigned char*>(&s);
+    std::memcpy(o, p + 1, 9);     // flags .. temperature_c
+    std::memcpy(o + 10, p + 10, 12);  // accel_raw, bootloader_response, charge_current_ma
+    std::memcpy(o + 24, p + 22, 32);  // pu_motors
+    if (n >= 68) {
+        std::memcpy(static_cast<void*>(&s.pid_state.emplace()), p + 54, 14);
+        s.ignored_trailing_bytes = n - 68;
+    } else {
+        s.pid_state.reset();
+        s.ignored_trailing_bytes = 0;
+    }
+    return hw::good;
+}
+
 template <std::size_t N>
 void status_decode_robowire(benchmark::State& state) {
     const auto in = status_inputs();
@@ -126,6 +169,57 @@ void status_decode_memcpy(benchmark::State& state) {
         for (const auto& item : in) {
             std::memcpy(out.data(), item.data(), N);
             benchmark::DoNotOptimize(out);
+        }
+    }
+    bench::messages(state, in.size());
+}
+
+// The same, with the length loaded per message from memory, as a BLE stack
+// hands a notification over ("_runtime_length" cases).
+template <std::size_t N>
+bench::vector<std::size_t> lengths() {
+    return bench::vector<std::size_t>(bench::variants, N);
+}
+template <std::size_t N, bool RuntimeLength>
+void status_decode_rw(benchmark::State& state) {
+    const auto in = status_inputs();
+    const auto len = lengths<N>();
+    for (auto _ : bench::measure(state)) {
+        for (std::size_t i = 0; i < in.size(); ++i) {
+            const std::size_t n = RuntimeLength ? len[i] : N;
+            auto r = robowire::decode<bw::status>(std::span(in[i]).first(n));
+            benchmark::DoNotOptimize(r);
+        }
+    }
+    bench::messages(state, in.size());
+}
+template <std::size_t N, bool RuntimeLength>
+void status_decode_into_rw(benchmark::State& state) {
+    const auto in = status_inputs();
+    const auto len = lengths<N>();
+    bw::status s{};
+    bench::in_memory(s);
+    for (auto _ : bench::measure(state)) {
+        for (std::size_t i = 0; i < in.size(); ++i) {
+            const std::size_t n = RuntimeLength ? len[i] : N;
+            auto e = robowire::decode_into(s, std::span(in[i]).first(n));
+            benchmark::DoNotOptimize(e);
+            benchmark::ClobberMemory();  // the escaped output is written
+        }
+    }
+    bench::messages(state, in.size());
+}
+template <std::size_t N, bool RuntimeLength>
+void status_decode_careful(benchmark::State& state) {
+    const auto in = status_inputs();
+    const auto len = lengths<N>();
+    bw::status s{};
+    bench::in_memory(s);
+    for (auto _ : bench::measure(state)) {
+        for (std::size_t i = 0; i < in.size(); ++i) {
+            const std::size_t n = RuntimeLength ? len[i] : N;
+            bench::consume(careful_decode_status(in[i].data(), n, s));
+            benchmark::ClobberMemory();  // the escaped output is written
         }
     }
     bench::messages(state, in.size());
@@ -490,6 +584,18 @@ void commands_memcpy(benchmark::State& state) {
 }
 }  // namespace
 
+BENCHMARK(status_decode_careful<68, false>)->Name("buwizz3.status68_decode:careful")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_careful<68, false>)->Name("buwizz3.status68_decode_into:careful")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_careful<68, true>)->Name("buwizz3.status68_decode_runtime_length:careful")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_careful<68, true>)->Name("buwizz3.status68_decode_into_runtime_length:careful")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_rw<68, true>)->Name("buwizz3.status68_decode_runtime_length:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_into_rw<68, true>)->Name("buwizz3.status68_decode_into_runtime_length:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_careful<54, false>)->Name("buwizz3.status54_decode:careful")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_careful<54, false>)->Name("buwizz3.status54_decode_into:careful")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_careful<54, true>)->Name("buwizz3.status54_decode_runtime_length:careful")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_careful<54, true>)->Name("buwizz3.status54_decode_into_runtime_length:careful")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_rw<54, true>)->Name("buwizz3.status54_decode_runtime_length:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(status_decode_into_rw<54, true>)->Name("buwizz3.status54_decode_into_runtime_length:robowire")->Apply(bench::rounds<1>);
 BENCHMARK(status_decode_robowire<68>)->Name("buwizz3.status68_decode:robowire")->Apply(bench::rounds<1>);
 BENCHMARK(status_decode_into<68>)->Name("buwizz3.status68_decode_into:robowire")->Apply(bench::rounds<1>);
 BENCHMARK(status_decode_handwritten<68>)->Name("buwizz3.status68_decode_into:handwritten")->Apply(bench::rounds<1>);

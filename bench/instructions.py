@@ -173,7 +173,7 @@ def measure(build, keep=None, filter_regex=None):
     }
 
 
-BASELINES = ("handwritten", "bytewise", "memcpy", "memchr")
+BASELINES = ("careful", "handwritten", "bytewise", "memcpy", "memchr")
 
 
 def print_table(data, out=sys.stdout):

@@ -30,7 +30,7 @@ for key in sorted(rows):
     if "robowire" not in v:
         continue
     t, unit, bps = v["robowire"]
-    for base in ("handwritten", "bytewise", "memcpy", "memchr"):
+    for base in ("careful", "handwritten", "bytewise", "memcpy", "memchr"):
         if base in v:
             bt, bunit, _ = v[base]
             print(f"{key:44} {t:9.2f} {unit:2} {base:>12} {bt:8.2f} {bunit:2} {t / bt:7.2f}")

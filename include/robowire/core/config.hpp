@@ -103,6 +103,25 @@
 #define ROBOWIRE_NO_UNROLL
 #endif
 
+// ROBOWIRE_COPY_RUNS: 1 lets decode copy each run of fields whose wire bytes
+// are their members' bytes at once (one memcpy of a constant size). Default 1
+// on little-endian targets that load unaligned words (x86, AArch64, ARMv7-M
+// and later, WebAssembly) unless ROBOWIRE_OPTIMIZE_SIZE; else 0 (field by
+// field, no library memcpy linked). Results are the same either way; define
+// it alike in every file of a program.
+#ifndef ROBOWIRE_COPY_RUNS
+#if !ROBOWIRE_OPTIMIZE_SIZE &&                                                                                  \
+    (defined(__x86_64__) || defined(__i386__) || defined(_M_X64) || defined(_M_IX86) || defined(__aarch64__) || \
+     defined(_M_ARM64) || defined(__ARM_FEATURE_UNALIGNED) || defined(__wasm__))
+#define ROBOWIRE_COPY_RUNS 1
+#else
+#define ROBOWIRE_COPY_RUNS 0
+#endif
+#endif
+#if ROBOWIRE_COPY_RUNS != 0 && ROBOWIRE_COPY_RUNS != 1
+#error "ROBOWIRE_COPY_RUNS must be 0 or 1"
+#endif
+
 // The inline namespace of the code that depends on the two macros above
 // (robowire::detail::size1_loops1 at -Os): files built with different
 // settings link into one program, each with its own copy of that code,

@@ -39,11 +39,15 @@ ROBOWIRE_ALWAYS_INLINE constexpr error check_fixed(std::span<const std::uint8_t>
 // M's fields from `in`, without the fixed-byte and length checks: for
 // dispatchers that have checked both already (`in` holds at least
 // max_size_v<M> bytes). Returns the first field error, or errc::ok.
+// On an error, nothing is written to `out`.
 template <described M>
 ROBOWIRE_ALWAYS_INLINE constexpr error decode_fields(M& out, std::span<const std::uint8_t> in) noexcept {
     error err{};
-    (void)detail::decode_record<M>(out, in.first(table_v<M>.max_size()), 0, err,
-                                   std::make_index_sequence<detail::field_count_v<M>>{});
+    const auto known = in.first(table_v<M>.max_size());
+    constexpr auto fields = std::make_index_sequence<detail::field_count_v<M>>{};
+    if (!detail::check_record<M>(known, 0, err, fields)) return err;
+    detail::prechecked none{};
+    (void)detail::decode_record<M>(out, known, 0, none, fields);
     return err;
 }
 }  // namespace codec::inline ROBOWIRE_MODE_NAMESPACE
@@ -68,14 +72,48 @@ inline constexpr bool message_via_local = true, alternative_via_local = false;
 inline constexpr bool message_via_local = false, alternative_via_local = true;
 #endif
 // The fields of M, from an input whose fixed bytes and length are checked.
+// Every field is checked before the first is written: on an error, `out` is
+// left as it was.
 template <class M>
 ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, std::span<const std::uint8_t> in) noexcept {
     constexpr std::size_t extent = table_v<M>.max_size();
+    constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
     error err{};
-    const auto known = in.size() > extent ? in.first(extent) : in;
-    if (!decode_record<M>(out, known, 0, err, std::make_index_sequence<field_count_v<M>>{})) return err;
-    if constexpr (reports_trailing<M>) out.ignored_trailing_bytes = in.size() - known.size();
+    if (!check_record<M>(in, 0, err, fields)) return err;  // reads the first `extent` bytes only
+    prechecked none{};
+    (void)decode_record<M>(out, in.size() > extent ? in.first(extent) : in, 0, none, fields);
+    if constexpr (reports_trailing<M>) out.ignored_trailing_bytes = in.size() > extent ? in.size() - extent : 0;
     return err;
+}
+// The error of an input that fails input_ok's test: the first wrong fixed
+// byte `in` has, else the length's. Out of line (the good path sets up no error).
+template <std::size_t Known, class M>
+ROBOWIRE_COLD constexpr error input_error(const std::uint8_t* data, std::size_t size) noexcept {
+    const std::span<const std::uint8_t> in(data, size);
+    if (const error e = codec::check_fixed<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{});
+        e.code != errc::ok)
+        return e;
+    return length_error(size, table_v<M>.min_size(), table_v<M>.max_input());
+}
+// Whether every fixed byte of M but the one at offset Known lies within the
+// shortest input: then one test of the length and the bytes finds every error.
+template <std::size_t Known, class M>
+inline constexpr bool fixed_within_min_v = [] {
+    for (const auto& f : table_v<M>.fixed)
+        if (f.offset != Known && f.offset >= table_v<M>.min_size()) return false;
+    return true;
+}();
+// The fixed bytes of M but the one at offset Known, all compared (no branch
+// between them, so adjacent bytes compare as a word); `in` holds them all.
+template <std::size_t Known, class M, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE constexpr bool fixed_match(std::span<const std::uint8_t> in,
+                                                  std::index_sequence<K...>) noexcept {
+    (void)in;  // messages without fixed bytes
+    unsigned diff = 0;
+    ((diff |=
+      table_v<M>.fixed[K].offset == Known ? 0u : unsigned(in[table_v<M>.fixed[K].offset] ^ table_v<M>.fixed[K].value)),
+     ...);
+    return diff == 0;
 }
 // M's fixed bytes but the one at offset Known, which a dispatcher has matched
 // already (no_offset: every fixed byte is checked), then the input's length.
@@ -83,16 +121,24 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, std::span<const std::
 template <std::size_t Known, class M, class R>
 ROBOWIRE_ALWAYS_INLINE constexpr bool input_ok(R& r, std::span<const std::uint8_t> in) noexcept {
     constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input();
-    if (const error e = codec::check_fixed<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{});
-        e.code != errc::ok) {
-        r = e;
+    if constexpr (fixed_within_min_v<Known, M>) {
+        if (in.size() - min <= max - min && fixed_match<Known, M>(in, std::make_index_sequence<fixed_count_v<M>>{}))
+            [[likely]]
+            return true;
+        r = input_error<Known, M>(in.data(), in.size());
         return false;
+    } else {
+        if (const error e = codec::check_fixed<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{});
+            e.code != errc::ok) {
+            r = e;
+            return false;
+        }
+        if (in.size() < min || in.size() > max) [[unlikely]] {
+            r = length_error(in.size(), min, max);
+            return false;
+        }
+        return true;
     }
-    if (in.size() < min || in.size() > max) [[unlikely]] {
-        r = length_error(in.size(), min, max);
-        return false;
-    }
-    return true;
 }
 // decode_into without the check of the fixed byte at offset Known.
 template <std::size_t Known, class M>
@@ -128,7 +174,7 @@ inline namespace ROBOWIRE_MODE_NAMESPACE {
 
 // Decodes `in` into `out` (an existing object, e.g. one refreshed 20 times a
 // second): the same checks as decode(); returns errc::ok or the error. On an
-// error, `out`'s fields are unspecified.
+// error, `out` is left exactly as it was.
 template <described M>
 [[nodiscard]] ROBOWIRE_ALWAYS_INLINE constexpr error decode_into(M& out, std::span<const std::uint8_t> in) noexcept {
     return detail::decode_raw(out, in.data(), in.size());

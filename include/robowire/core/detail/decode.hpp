@@ -5,6 +5,7 @@
 #include "../config.hpp"  // first: the C++ version check
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -26,12 +27,23 @@ namespace robowire::detail::inline ROBOWIRE_MODE_NAMESPACE {
 // ---- decode: ranges, sizes and kinds are template constants; byte offsets
 // are arguments (constants again once inlined), so that each field is
 // instantiated once, not once per array element or record position.
+//
+// Two passes: check_record finds the first error without writing anything;
+// decode_record then writes the fields. Its error sink Err is `error` (every
+// check made as the field is decoded: codec::decode_fields' callers' old
+// contract) or `prechecked` (check_record passed: no check, and runs of
+// fields whose wire bytes are their members' bytes are copied at once).
+
+// The error sink of a write pass whose input check_record passed.
+struct prechecked {};
+template <class Err>
+inline constexpr bool checks_v = !std::is_same_v<Err, prechecked>;
 
 // A number, enum, bool or float of wire type W, valid in [Min, Max]: shared
 // by every field of the same kind and range (fewer functions to compile).
-template <class W, std::int64_t Min, std::int64_t Max, class E>
+template <class W, std::int64_t Min, std::int64_t Max, class E, class Err>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_scalar(E& v, std::span<const std::uint8_t> in, std::size_t off,
-                                                    error& err) noexcept {
+                                                    Err& err) noexcept {
     if constexpr (W::kind == wire_kind::f32le) {
         v = load_le<float>(in.data() + off);
         return true;
@@ -42,9 +54,11 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_scalar(E& v, std::span<const std::u
         else raw = load_le<typename W::raw_type>(in.data() + off);
         if constexpr (std::is_enum_v<E>) {
             const auto e = static_cast<E>(raw);
-            if (!is_valid_enum(e)) [[unlikely]] {
-                err = codec::fail_at(errc::invalid_enum, off);
-                return false;
+            if constexpr (checks_v<Err>) {
+                if (!is_valid_enum(e)) [[unlikely]] {
+                    err = codec::fail_at(errc::invalid_enum, off);
+                    return false;
+                }
             }
             v = e;
         } else {
@@ -54,7 +68,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_scalar(E& v, std::span<const std::u
                     return range{std::numeric_limits<typename W::raw_type>::min(),
                                  std::numeric_limits<typename W::raw_type>::max()};
             }();
-            if constexpr (Min > full.min || Max < full.max) {
+            if constexpr (checks_v<Err> && (Min > full.min || Max < full.max)) {
                 if (!in_range<Min, Max, full.min, full.max>(raw)) [[unlikely]] {
                     err = codec::fail_at(errc::value_out_of_range, off);
                     return false;
@@ -66,16 +80,16 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_scalar(E& v, std::span<const std::u
         return true;
     }
 }
-template <class M, std::size_t I, class E>
+template <class M, std::size_t I, class E, class Err>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::uint8_t> in, std::size_t off,
-                                                     error& err) noexcept;
+                                                     Err& err) noexcept;
 
-template <class M, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, std::size_t base,
-                                                    error& err, std::index_sequence<I...>) noexcept;
+template <class M, class Err, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, std::size_t base, Err& err,
+                                                    std::index_sequence<I...>) noexcept;
 
-template <class M, std::size_t I, class V, std::size_t... K>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_array(V& v, std::span<const std::uint8_t> in, std::size_t off, error& err,
+template <class M, std::size_t I, class V, class Err, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_array(V& v, std::span<const std::uint8_t> in, std::size_t off, Err& err,
                                                    std::index_sequence<K...>) noexcept {
     constexpr std::size_t es = field_t<M, I>::element_size;
     if constexpr (decode_in_loop<field_t<M, I>>()) {
@@ -89,9 +103,9 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_array(V& v, std::span<const std::ui
     return (decode_element<M, I>(v[K], in, off + K * es, err) && ...);
 }
 
-template <class M, std::size_t I, class V>
+template <class M, std::size_t I, class V, class Err>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_value(V& v, std::span<const std::uint8_t> in, std::size_t off,
-                                                   error& err) noexcept {
+                                                   Err& err) noexcept {
     using F = field_t<M, I>;
     if constexpr (plain_byte_array_v<M, I>) {
         if (!std::is_constant_evaluated()) {
@@ -103,9 +117,9 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_value(V& v, std::span<const std::ui
     else return decode_element<M, I>(v, in, off, err);
 }
 
-template <class M, std::size_t I>
+template <class M, std::size_t I, class Err>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::uint8_t> in, std::size_t base,
-                                                   error& err) noexcept {
+                                                   Err& err) noexcept {
     constexpr const auto& f = field_v<M, I>;
     using F = field_t<M, I>;
     const std::size_t off = base + f.offset;
@@ -116,11 +130,13 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::ui
             member.reset();
             return true;
         }  // absent
-        if (in.size() < off + F::size) {
-            err = codec::fail_at(errc::bad_length, off);
-            return false;
+        if constexpr (checks_v<Err>) {
+            if (in.size() < off + F::size) {
+                err = codec::fail_at(errc::bad_length, off);
+                return false;
+            }
         }
-        if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // decoded in place (on an error the message is unspecified)
+        if constexpr (ROBOWIRE_OPTIMIZE_SIZE || (!checks_v<Err> && ROBOWIRE_COPY_RUNS)) {  // decoded in place
             return decode_value<M, I>(member.emplace(), in, off, err);
         } else {
             value_t<typename F::member_type> tmp{};  // stored whole once decoded: the stores merge
@@ -135,21 +151,132 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::ui
     }
 }
 
-template <class M, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, std::size_t base,
-                                                    error& err, std::index_sequence<I...>) noexcept {
+// ---- runs (ROBOWIRE_COPY_RUNS, at run time): fields whose wire bytes are
+// their members' bytes, next to each other on the wire and in memory, are
+// copied at once. Member offsets are taken from the object: constants once
+// inlined, so the tests fold away and each run is one memcpy of a constant
+// size; the code stays correct if they do not.
+
+// A scalar of wire type W whose wire bytes are the bytes of an E holding it
+// (the value is checked already): same size, no conversion, host order.
+template <class W, class E>
+inline constexpr bool same_bytes_v = [] {
+    if constexpr (!scalar_wire_v<W> || W::kind == wire_kind::bits || std::is_same_v<E, bool>) return false;
+    else if constexpr (W::kind == wire_kind::f32le) return std::is_same_v<E, float> && sizeof(float) == 4;
+    else if constexpr (!std::is_integral_v<E> && !std::is_enum_v<E>) return false;
+    else if constexpr (sizeof(E) != sizeof(typename W::raw_type)) return false;
+    else return sizeof(E) == 1 || std::endian::native == std::endian::little;
+}();
+struct run {
+    std::size_t wire = 0, mem = 0, size = 0;  // byte offsets in the input and in the object; 0: no run
+};
+template <class M>
+inline std::size_t offset_in(const M& m, const void* member) noexcept {
+    return static_cast<std::size_t>(static_cast<const unsigned char*>(member) -
+                                    reinterpret_cast<const unsigned char*>(&m));
+}
+template <class E>
+ROBOWIRE_ALWAYS_INLINE std::size_t record_copy_size(const E& e) noexcept;
+// Field I of M copied as bytes: its size on the wire, or 0 if it is not a copy.
+template <class M, std::size_t I>
+ROBOWIRE_ALWAYS_INLINE std::size_t field_copy_size(const M& m) noexcept {
+    using F = field_t<M, I>;
+    using E = typename F::element_type;
+    constexpr auto member_ptr = field_v<M, I>.member;
+    if constexpr (F::is_optional) {
+        return 0;
+    } else if constexpr (F::kind == wire_kind::record) {
+        const auto& first = [&]() -> const E& {
+            if constexpr (F::is_array) return (m.*member_ptr)[0];
+            else return m.*member_ptr;
+        }();
+        const std::size_t n = record_copy_size(first);
+        if constexpr (F::is_array) return n == sizeof(E) && F::element_size == sizeof(E) ? F::count * sizeof(E) : 0;
+        else return n == F::element_size ? n : 0;
+    } else if constexpr (same_bytes_v<typename F::wire_type, E>) {
+        return F::count * sizeof(E);
+    } else {
+        return 0;
+    }
+}
+// A record E copied as bytes: the end of its last field, if every member is a
+// field copied as bytes at its own wire offset; else 0.
+template <class E>
+ROBOWIRE_ALWAYS_INLINE std::size_t record_copy_size(const E& e) noexcept {
+    if constexpr (!decode_writes_every_member_v<E> || reports_trailing<E>) {
+        return 0;
+    } else {
+        return [&]<std::size_t... J>(std::index_sequence<J...>) {
+            std::size_t end = 0;
+            const bool all = ((field_copy_size<E, J>(e) == field_t<E, J>::size &&
+                               offset_in(e, &(e.*(field_v<E, J>.member))) == field_v<E, J>.offset &&
+                               ((end = end > field_v<E, J>.offset + field_t<E, J>::size
+                                           ? end
+                                           : field_v<E, J>.offset + field_t<E, J>::size),
+                                true)) &&
+                              ...);
+            return all ? end : 0;
+        }
+        (std::make_index_sequence<field_count_v<E>>{});
+    }
+}
+// (g++ cannot always see that a run past the end of a caller's buffer is
+// reached only by a longer input, and warns.)
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Warray-bounds"
+#pragma GCC diagnostic ignored "-Wstringop-overread"
+#endif
+template <class M>
+ROBOWIRE_ALWAYS_INLINE void flush(M& m, std::span<const std::uint8_t> in, const run& r) noexcept {
+    if (r.size != 0) std::memcpy(reinterpret_cast<unsigned char*>(&m) + r.mem, in.data() + r.wire, r.size);
+}
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
+// Field I: joins the current run, starts one, or is decoded on its own.
+template <class M, std::size_t I>
+ROBOWIRE_ALWAYS_INLINE void copy_or_decode(M& m, std::span<const std::uint8_t> in, std::size_t base, run& r) noexcept {
+    const std::size_t size = field_copy_size<M, I>(m);
+    if (size != 0) {
+        const std::size_t wire = base + field_v<M, I>.offset, mem = offset_in(m, &(m.*(field_v<M, I>.member)));
+        if (r.size != 0 && r.wire + r.size == wire && r.mem + r.size == mem) {
+            r.size += size;
+        } else {
+            flush(m, in, r);
+            r = {wire, mem, size};
+        }
+    } else {
+        flush(m, in, r);
+        r = {};
+        prechecked none{};
+        (void)decode_field<M, I>(m, in, base, none);
+    }
+}
+
+template <class M, class Err, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, std::size_t base, Err& err,
+                                                    std::index_sequence<I...>) noexcept {
     (void)m, (void)in, (void)base, (void)err;  // messages without fields
+    if constexpr (!checks_v<Err> && ROBOWIRE_COPY_RUNS) {
+        if (!std::is_constant_evaluated()) {
+            run r{};
+            (copy_or_decode<M, I>(m, in, base, r), ...);
+            flush(m, in, r);
+            return true;
+        }
+    }
     return (decode_field<M, I>(m, in, base, err) && ...);
 }
 
-template <class M, std::size_t I, class E>
+template <class M, std::size_t I, class E, class Err>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::uint8_t> in, std::size_t off,
-                                                     error& err) noexcept {
+                                                     Err& err) noexcept {
     constexpr const auto& f = field_v<M, I>;
     using F = field_t<M, I>;
     using W = typename F::wire_type;
     if constexpr (W::kind == wire_kind::record) {
-        if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
+        if constexpr (ROBOWIRE_OPTIMIZE_SIZE || (!checks_v<Err> && ROBOWIRE_COPY_RUNS)) {  // in place
             return decode_record<E>(v, in, off, err, std::make_index_sequence<field_count_v<E>>{});
         } else {
             // Decoded into a local, then stored whole: the loads are not ordered
@@ -163,11 +290,13 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
         constexpr std::size_t n = text_traits<E>::size;
         std::size_t len = 0;
         while (len < n && in[off + len] != 0) ++len;
-        for (std::size_t i = len; i < n; ++i)
-            if (in[off + i] != 0) {
-                err = codec::fail_at(errc::bad_padding, off + i);
-                return false;
-            }
+        if constexpr (checks_v<Err>) {
+            for (std::size_t i = len; i < n; ++i)
+                if (in[off + i] != 0) {
+                    err = codec::fail_at(errc::bad_padding, off + i);
+                    return false;
+                }
+        }
         if (!std::is_constant_evaluated()) {  // straight from the input (char may view any bytes)
             v.assign(std::string_view(reinterpret_cast<const char*>(in.data() + off), len));
             return true;
@@ -184,6 +313,73 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
     } else {
         return decode_scalar<W, f.valid.min, f.valid.max>(v, in, off, err);
     }
+}
+
+// ---- check: the first error decode_record<M, error> would find, in the
+// same order, without writing anything.
+template <class M, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(std::span<const std::uint8_t> in, std::size_t base, error& err,
+                                                   std::index_sequence<I...>) noexcept;
+template <class M, std::size_t I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(std::span<const std::uint8_t> in, std::size_t off,
+                                                    error& err) noexcept {
+    using F = field_t<M, I>;
+    using E = typename F::element_type;
+    using W = typename F::wire_type;
+    if constexpr (W::kind == wire_kind::record) {
+        return check_record<E>(in, off, err, std::make_index_sequence<field_count_v<E>>{});
+    } else if constexpr (W::kind == wire_kind::text) {
+        constexpr std::size_t n = text_traits<E>::size;
+        std::size_t len = 0;
+        while (len < n && in[off + len] != 0) ++len;
+        for (std::size_t i = len; i < n; ++i)
+            if (in[off + i] != 0) [[unlikely]] {
+                err = codec::fail_at(errc::bad_padding, off + i);
+                return false;
+            }
+        return true;
+    } else if constexpr (W::kind == wire_kind::tail || W::kind == wire_kind::f32le) {
+        return true;
+    } else {
+        E unused{};  // decode_scalar's checks; the store is dead
+        return decode_scalar<W, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(unused, in, off, err);
+    }
+}
+template <class M, std::size_t I, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_array(std::span<const std::uint8_t> in, std::size_t off, error& err,
+                                                  std::index_sequence<K...>) noexcept {
+    constexpr std::size_t es = field_t<M, I>::element_size;
+    if constexpr (decode_in_loop<field_t<M, I>>()) {
+        if (!std::is_constant_evaluated()) {
+            ROBOWIRE_NO_UNROLL
+            for (std::size_t k = 0; k < sizeof...(K); ++k)
+                if (!check_element<M, I>(in, off + k * es, err)) return false;
+            return true;
+        }
+    }
+    return (check_element<M, I>(in, off + K * es, err) && ...);
+}
+template <class M, std::size_t I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_field(std::span<const std::uint8_t> in, std::size_t base,
+                                                  error& err) noexcept {
+    using F = field_t<M, I>;
+    const std::size_t off = base + field_v<M, I>.offset;
+    if constexpr (F::is_optional) {
+        if (in.size() - (off + 1) < F::size - 1) [[unlikely]] {  // one compare: off < size < off + F::size
+            err = codec::fail_at(errc::bad_length, off);
+            return false;
+        }
+        if (in.size() <= off) return true;  // absent
+    }
+    if constexpr (plain_byte_array_v<M, I>) return true;
+    else if constexpr (F::is_array) return check_array<M, I>(in, off, err, std::make_index_sequence<F::count>{});
+    else return check_element<M, I>(in, off, err);
+}
+template <class M, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(std::span<const std::uint8_t> in, std::size_t base, error& err,
+                                                   std::index_sequence<I...>) noexcept {
+    (void)in, (void)base, (void)err;  // messages without fields
+    return (check_field<M, I>(in, base, err) && ...);
 }
 
 // No byte offset (check_fixed: no fixed byte is skipped).
