@@ -5,6 +5,9 @@
 #include <robowire/navbot.hpp>
 
 #include <algorithm>
+#include <bit>
+#include <cstddef>
+#include <span>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -94,6 +97,30 @@ hw::error hw_decode(const std::uint8_t* p, std::size_t n, nb::maneuver& m) {
     return hw::good;
 }
 
+// The careful decoder: the length and the fixed bytes as one test (a word
+// compare), the ranges as one yes/no, the exact error in a cold function
+// (robowire's order), then the fields copied at once into robowire's own
+// struct, whose members are the wire's bytes 5..14 (layout checked below).
+static_assert(std::endian::native == std::endian::little && sizeof(nb::maneuver) == 10 &&
+              offsetof(nb::maneuver, switch_a) == 4 && offsetof(nb::maneuver, ball_y) == 9);
+[[gnu::cold, gnu::noinline]] hw::error careful_maneuver_error(const std::uint8_t* p, std::size_t n) {
+    nb::maneuver unused{};
+    return hw_decode(p, n, unused);
+}
+inline bool out8(std::uint8_t b, int lo, int hi) {  // the signed byte b outside [lo, hi]
+    return static_cast<unsigned>(static_cast<std::int8_t>(b) - lo) > static_cast<unsigned>(hi - lo);
+}
+inline hw::error careful_decode(const std::uint8_t* p, std::size_t n, nb::maneuver& m) {
+    std::uint32_t head;
+    std::memcpy(&head, p, 4);  // n >= 4 when n == 20 (checked first)
+    if (n != 20 || head != 0x0010AA55u) [[unlikely]] return careful_maneuver_error(p, n);
+    const bool bad = out8(p[5], -100, 100) | (p[6] > 100) | out8(p[7], -100, 100) | out8(p[8], -100, 100) |
+                     (p[9] > 2) | (p[10] > 1) | (p[11] > 1) | (p[12] > 2) | out8(p[13], -5, 5) | out8(p[14], -5, 5);
+    if (bad) [[unlikely]] return careful_maneuver_error(p, n);
+    std::memcpy(static_cast<void*>(&m), p + 5, 10);
+    return hw::good;
+}
+
 void encode_robowire(benchmark::State& state) {
     const auto v = maneuvers();
     for (auto _ : bench::measure(state)) {
@@ -151,6 +178,32 @@ bench::vector<std::string_view> json_payloads() {
         v.emplace_back(slots[k].data(), s.size());
     }
     return v;
+}
+template <bool RuntimeLength>
+void decode_rw(benchmark::State& state) {
+    const auto v = maneuver_frames();
+    const bench::vector<std::size_t> len(v.size(), 20);
+    for (auto _ : bench::measure(state)) {
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            auto r = robowire::decode<nb::maneuver>(std::span(v[i]).first(RuntimeLength ? len[i] : 20));
+            benchmark::DoNotOptimize(r);
+        }
+    }
+    bench::messages(state, v.size());
+}
+template <bool RuntimeLength>
+void decode_careful(benchmark::State& state) {
+    const auto v = maneuver_frames();
+    const bench::vector<std::size_t> len(v.size(), 20);
+    nb::maneuver m{};
+    bench::in_memory(m);
+    for (auto _ : bench::measure(state)) {
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            bench::consume(careful_decode(v[i].data(), RuntimeLength ? len[i] : 20, m));
+            benchmark::ClobberMemory();  // the escaped output is written
+        }
+    }
+    bench::messages(state, v.size());
 }
 void json_robowire(benchmark::State& state) {
     const auto v = json_payloads();
@@ -280,6 +333,9 @@ void json_handwritten(benchmark::State& state) {
 
 BENCHMARK(encode_robowire)->Name("navbot.maneuver_encode:robowire")->Apply(bench::rounds<1>);
 BENCHMARK(encode_handwritten)->Name("navbot.maneuver_encode:handwritten")->Apply(bench::rounds<1>);
+BENCHMARK(decode_careful<false>)->Name("navbot.maneuver_decode:careful")->Apply(bench::rounds<1>);
+BENCHMARK(decode_rw<true>)->Name("navbot.maneuver_decode_runtime_length:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(decode_careful<true>)->Name("navbot.maneuver_decode_runtime_length:careful")->Apply(bench::rounds<1>);
 BENCHMARK(decode_robowire)->Name("navbot.maneuver_decode:robowire")->Apply(bench::rounds<1>);
 BENCHMARK(decode_handwritten)->Name("navbot.maneuver_decode:handwritten")->Apply(bench::rounds<1>);
 BENCHMARK(json_robowire)->Name("navbot.json200_fragment_reassemble:robowire")->Apply(bench::rounds<8>);

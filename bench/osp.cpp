@@ -6,6 +6,10 @@
 // usual kind (as MAVLink-style parsers work); memchr for start bytes (floor).
 #include <robowire/osp.hpp>
 
+#include <bit>
+#include <cstddef>
+#include <span>
+
 #include "common.hpp"
 
 namespace {
@@ -66,6 +70,96 @@ hw::error hw_decode_any(const std::uint8_t* p, std::size_t n, hw_msg& m) {
     case 0x0214: m.b = p[4]; m.a = p[5]; return p[4] <= 4 ? hw::good : hw::fail(hw::invalid_enum, 4);
     default: return hw::fail(hw::unknown_message, 2);
     }
+}
+
+// The careful decoders: the length and the markers, DEV and CMD as one
+// test (words compared, little-endian host), the exact error in a cold
+// function (robowire's order), the parameters copied at once.
+static_assert(std::endian::native == std::endian::little, "the careful baselines compare little-endian words");
+inline std::uint32_t ld32(const std::uint8_t* p) { std::uint32_t v; std::memcpy(&v, p, 4); return v; }
+inline std::uint16_t ld16(const std::uint8_t* p) { std::uint16_t v; std::memcpy(&v, p, 2); return v; }
+[[gnu::cold, gnu::noinline]] hw::error careful_voltage_error(const std::uint8_t* p, std::size_t n) {
+    std::int16_t unused = 0;
+    return hw_voltage(p, n, unused);
+}
+inline hw::error careful_voltage(const std::uint8_t* p, std::size_t n, std::int16_t& cv) {
+    if (n != 10 || ((ld32(p) ^ 0x1202AAFFu) | (ld16(p + 8) ^ 0x7755u)) != 0) [[unlikely]]
+        return careful_voltage_error(p, n);
+    std::memcpy(&cv, p + 4, 2);
+    return hw::good;
+}
+[[gnu::cold, gnu::noinline]] hw::error careful_any_error(const std::uint8_t* p, std::size_t n) {
+    hw_msg unused{};
+    return hw_decode_any(p, n, unused);
+}
+[[gnu::cold, gnu::noinline]] hw::error careful_enum_error() { return hw::fail(hw::invalid_enum, 4); }
+inline hw::error careful_decode_any(const std::uint8_t* p, std::size_t n, hw_msg& m) {
+    if (n != 10 || ((ld16(p) ^ 0xAAFFu) | (ld16(p + 8) ^ 0x7755u)) != 0) [[unlikely]]
+        return careful_any_error(p, n);
+    std::memcpy(&m.dev, p + 2, 6);  // dev, cmd, p[4]
+    switch (ld16(p + 2)) {  // DEV | CMD << 8
+    case 0x0100: case 0x0102: case 0x0202: case 0x0302: case 0x0402: return hw::good;
+    case 0x1100: m.b = p[4]; return p[4] <= 3 ? hw::good : careful_enum_error();
+    case 0x0201: m.b = p[4]; m.a = ld16(p + 5); return hw::good;
+    case 0x1102: case 0x1202: case 0x1302: m.a = ld16(p + 4); return hw::good;
+    case 0x1402: m.b = p[4]; m.a = p[5]; return p[4] <= 4 ? hw::good : careful_enum_error();
+    default: return careful_any_error(p, n);
+    }
+}
+static_assert(offsetof(hw_msg, cmd) == 1 && offsetof(hw_msg, p) == 2);
+
+// With the length loaded per message from memory, as a UART driver hands a
+// frame over ("_runtime_length" cases), or the constant 10.
+template <bool RuntimeLength>
+void voltage_rw(benchmark::State& state) {
+    const auto v = voltage_frames();
+    const bench::vector<std::size_t> len(v.size(), 10);
+    for (auto _ : bench::measure(state)) {
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            const auto r = robowire::decode<osp::obp1::voltage>(std::span(v[i]).first(RuntimeLength ? len[i] : 10));
+            bench::consume(r);
+        }
+    }
+    bench::messages(state, v.size());
+}
+template <bool RuntimeLength>
+void voltage_careful(benchmark::State& state) {
+    const auto v = voltage_frames();
+    const bench::vector<std::size_t> len(v.size(), 10);
+    std::int16_t cv = 0;
+    for (auto _ : bench::measure(state)) {
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            bench::consume(careful_voltage(v[i].data(), RuntimeLength ? len[i] : 10, cv));
+            benchmark::DoNotOptimize(cv);
+        }
+    }
+    bench::messages(state, v.size());
+}
+template <bool RuntimeLength>
+void dispatch_rw(benchmark::State& state) {
+    const auto v = frames();
+    const bench::vector<std::size_t> len(v.size(), 10);
+    for (auto _ : bench::measure(state)) {
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            auto r = osp::decode(std::span(v[i]).first(RuntimeLength ? len[i] : 10));
+            benchmark::DoNotOptimize(r);
+        }
+    }
+    bench::messages(state, v.size());
+}
+template <bool RuntimeLength>
+void dispatch_careful(benchmark::State& state) {
+    const auto v = frames();
+    const bench::vector<std::size_t> len(v.size(), 10);
+    hw_msg m{};
+    bench::in_memory(m);
+    for (auto _ : bench::measure(state)) {
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            bench::consume(careful_decode_any(v[i].data(), RuntimeLength ? len[i] : 10, m));
+            benchmark::ClobberMemory();  // the escaped output is written
+        }
+    }
+    bench::messages(state, v.size());
 }
 
 void voltage_robowire(benchmark::State& state) {
@@ -228,6 +322,12 @@ void scan_memchr(benchmark::State& state, kind k) {
 }
 }  // namespace
 
+BENCHMARK(voltage_careful<false>)->Name("osp.decode_voltage:careful")->Apply(bench::rounds<1>);
+BENCHMARK(voltage_rw<true>)->Name("osp.decode_voltage_runtime_length:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(voltage_careful<true>)->Name("osp.decode_voltage_runtime_length:careful")->Apply(bench::rounds<1>);
+BENCHMARK(dispatch_careful<false>)->Name("osp.decode_dispatch:careful")->Apply(bench::rounds<1>);
+BENCHMARK(dispatch_rw<true>)->Name("osp.decode_dispatch_runtime_length:robowire")->Apply(bench::rounds<1>);
+BENCHMARK(dispatch_careful<true>)->Name("osp.decode_dispatch_runtime_length:careful")->Apply(bench::rounds<1>);
 BENCHMARK(voltage_robowire)->Name("osp.decode_voltage:robowire")->Apply(bench::rounds<1>);
 BENCHMARK(voltage_handwritten)->Name("osp.decode_voltage:handwritten")->Apply(bench::rounds<1>);
 BENCHMARK(dispatch_robowire)->Name("osp.decode_dispatch:robowire")->Apply(bench::rounds<1>);

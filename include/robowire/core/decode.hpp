@@ -3,8 +3,11 @@
 
 #include "config.hpp"  // first: the C++ version check
 
+#include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <utility>
 
@@ -103,12 +106,61 @@ inline constexpr bool fixed_within_min_v = [] {
         if (f.offset != Known && f.offset >= table_v<M>.min_size()) return false;
     return true;
 }();
+// The fixed bytes of M but the one at offset Known, as masked words of the
+// shortest input (ROBOWIRE_COPY_RUNS targets): each word a load, an xor and an
+// and, as a hand-written decoder compares its markers.
+struct fixed_word {
+    std::size_t start = 0;
+    std::uint64_t mask = 0, value = 0;
+};
+template <std::size_t Known, class M>
+inline constexpr auto fixed_words_v = [] {
+    constexpr std::size_t min = table_v<M>.min_size();
+    constexpr std::size_t width = min >= 8 ? 8 : min >= 4 ? 4 : min >= 2 ? 2 : 1;
+    struct words {
+        std::array<fixed_word, fixed_count_v<M> + 1> w{};
+        std::size_t count = 0, width = 0;
+    } r{};
+    r.width = width;
+    for (const auto& f : table_v<M>.fixed) {
+        if (f.offset == Known) continue;
+        bool covered = false;
+        for (std::size_t k = 0; k < r.count; ++k)
+            covered = covered || (f.offset >= r.w[k].start && f.offset < r.w[k].start + width);
+        if (!covered) r.w[r.count++].start = f.offset + width <= min ? f.offset : min - width;
+    }
+    for (std::size_t k = 0; k < r.count; ++k)
+        for (const auto& f : table_v<M>.fixed)
+            if (f.offset != Known && f.offset >= r.w[k].start && f.offset < r.w[k].start + width) {
+                const auto shift = 8 * (f.offset - r.w[k].start);
+                r.w[k].mask |= std::uint64_t{0xFF} << shift;
+                r.w[k].value |= std::uint64_t{f.value} << shift;
+            }
+    return r;
+}();
+template <std::size_t Known, class M, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE bool fixed_words_match(const std::uint8_t* in, std::index_sequence<K...>) noexcept {
+    constexpr auto& words = fixed_words_v<Known, M>;
+    (void)in;  // no fixed byte left to compare
+    std::uint64_t diff = 0;
+    (
+        (void)[&] {
+            std::uint64_t w = 0;
+            std::memcpy(&w, in + words.w[K].start, words.width);
+            diff |= (w ^ words.w[K].value) & words.w[K].mask;
+        }(),
+        ...);
+    return diff == 0;
+}
 // The fixed bytes of M but the one at offset Known, all compared (no branch
-// between them, so adjacent bytes compare as a word); `in` holds them all.
+// between them); `in` holds them all.
 template <std::size_t Known, class M, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr bool fixed_match(std::span<const std::uint8_t> in,
                                                   std::index_sequence<K...>) noexcept {
-    (void)in;  // messages without fixed bytes
+    if constexpr (ROBOWIRE_COPY_RUNS && std::endian::native == std::endian::little) {
+        if (!std::is_constant_evaluated())
+            return fixed_words_match<Known, M>(in.data(), std::make_index_sequence<fixed_words_v<Known, M>.count>{});
+    }
     unsigned diff = 0;
     ((diff |=
       table_v<M>.fixed[K].offset == Known ? 0u : unsigned(in[table_v<M>.fixed[K].offset] ^ table_v<M>.fixed[K].value)),

@@ -118,8 +118,8 @@ constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
         if (in.size() > frame_size) return fail(errc::too_long, frame_size);
         return {};
     } else {  // unrolled: faster on hosts
-        if (in.size() == frame_size && in[0] == start1 && in[1] == start2 && in[frame_size - 2] == end1 &&
-            in[frame_size - 1] == end2) [[likely]]
+        if (in.size() == frame_size && detail::fixed_match<detail::no_offset, osp::frame>(
+                                           in, std::make_index_sequence<markers.size()>{})) [[likely]]
             return {};
         return frame_error(in);
     }
