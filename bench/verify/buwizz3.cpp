@@ -39,6 +39,14 @@ static void check_status(const std::uint8_t* p, std::size_t n, const std::string
     if (same_err("status decode_into", ei, e, ctx) && e == hw::good) {
         if (!same_status(h, into)) mismatch("status decode_into", ctx);
     }
+    bw::status sentinel{};
+    sentinel.flags = 0x5A;
+    sentinel.pu_motors[3].position = -7;
+    sentinel.ignored_trailing_bytes = 3;
+    bw::status c = sentinel;
+    const auto ce = careful_decode_status(p, n, c);
+    if (same_err("status decode careful", ei, ce, ctx) && !(ce == hw::good ? c == into : c == sentinel))
+        mismatch("status decode careful", ctx);
 }
 
 template <class M, class Enc>

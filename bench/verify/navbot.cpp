@@ -9,6 +9,12 @@ static void check_dec(const std::uint8_t* p, std::size_t n, const std::string& c
     const auto e = hw_decode(p, n, m);
     if (same_err("maneuver decode", rw_err(r), e, ctx + " n=" + std::to_string(n)) && e == hw::good && !(m == *r))
         mismatch("maneuver decode", ctx);
+    const nb::maneuver sentinel{1, 2, 3, 4, nb::switch_a{1}, nb::switch_b{1}, nb::switch_c{1}, nb::switch_d{1}, 5, -5};
+    nb::maneuver c = sentinel;
+    const auto ce = careful_decode(p, n, c);
+    if (same_err("maneuver decode careful", rw_err(r), ce, ctx + " n=" + std::to_string(n)) &&
+        !(ce == hw::good ? c == *r : c == sentinel))
+        mismatch("maneuver decode careful", ctx);
 }
 static void check_enc(const nb::maneuver& m, const std::string& ctx) {
     auto r = robowire::encode(m);

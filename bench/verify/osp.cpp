@@ -9,12 +9,22 @@ static void check_voltage(const std::uint8_t* p, std::size_t n, const std::strin
     const auto e = hw_voltage(p, n, cv);
     if (same_err("osp voltage", rw_err(r), e, ctx + " n=" + std::to_string(n)) && e == hw::good && cv != r->centivolts)
         mismatch("osp voltage", ctx);
+    std::int16_t ccv = 0x1234;
+    const auto ce = careful_voltage(p, n, ccv);
+    if (same_err("osp voltage careful", rw_err(r), ce, ctx + " n=" + std::to_string(n)) &&
+        (ce == hw::good ? ccv != r->centivolts : ccv != 0x1234))
+        mismatch("osp voltage careful", ctx);
 }
 static void check_any(const std::uint8_t* p, std::size_t n, const std::string& ctx) {
     auto r = osp::decode(std::span<const std::uint8_t>(p, n));
-    hw_msg m{};
+    hw_msg m{}, c{};
     std::memset(&m, 0xEE, sizeof m);
+    std::memset(&c, 0xEE, sizeof c);
     const auto e = hw_decode_any(p, n, m);
+    const auto ce = careful_decode_any(p, n, c);
+    if (ce != e || (e == hw::good && std::memcmp(&m, &c, sizeof m) != 0))
+        mismatch("osp decode careful", ctx + " n=" + std::to_string(n));
+    ++g_counts["osp decode careful"];
     if (!same_err("osp decode", rw_err(r), e, ctx + " n=" + std::to_string(n))) return;
     // frame(): held whenever the markers and length were right
     const bool framed = r.frame().has_value();
