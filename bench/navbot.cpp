@@ -107,15 +107,17 @@ static_assert(std::endian::native == std::endian::little && sizeof(nb::maneuver)
     nb::maneuver unused{};
     return hw_decode(p, n, unused);
 }
-inline bool out8(std::uint8_t b, int lo, int hi) {  // the signed byte b outside [lo, hi]
+inline unsigned out8(std::uint8_t b, int lo, int hi) {  // 1: the signed byte b is outside [lo, hi]
     return static_cast<unsigned>(static_cast<std::int8_t>(b) - lo) > static_cast<unsigned>(hi - lo);
 }
+inline unsigned above(std::uint8_t b, unsigned hi) { return b > hi; }  // 1: b > hi
 inline hw::error careful_decode(const std::uint8_t* p, std::size_t n, nb::maneuver& m) {
     std::uint32_t head;
     std::memcpy(&head, p, 4);  // n >= 4 when n == 20 (checked first)
     if (n != 20 || head != 0x0010AA55u) [[unlikely]] return careful_maneuver_error(p, n);
-    const bool bad = out8(p[5], -100, 100) | (p[6] > 100) | out8(p[7], -100, 100) | out8(p[8], -100, 100) |
-                     (p[9] > 2) | (p[10] > 1) | (p[11] > 1) | (p[12] > 2) | out8(p[13], -5, 5) | out8(p[14], -5, 5);
+    const unsigned bad = out8(p[5], -100, 100) | above(p[6], 100) | out8(p[7], -100, 100) | out8(p[8], -100, 100) |
+                         above(p[9], 2) | above(p[10], 1) | above(p[11], 1) | above(p[12], 2) | out8(p[13], -5, 5) |
+                         out8(p[14], -5, 5);
     if (bad) [[unlikely]] return careful_maneuver_error(p, n);
     std::memcpy(static_cast<void*>(&m), p + 5, 10);
     return hw::good;

@@ -70,7 +70,7 @@ ROBOWIRE_COLD constexpr error length_error(std::size_t size, std::size_t min, st
 // member by member). Through a local only if decoding writes every member
 // (decode_writes_every_member_v; for an alternative, flat_record_v).
 #if defined(__clang__)
-inline constexpr bool message_via_local = true, alternative_via_local = false;
+inline constexpr bool message_via_local = !ROBOWIRE_COPY_RUNS, alternative_via_local = false;
 #else
 inline constexpr bool message_via_local = false, alternative_via_local = true;
 #endif
