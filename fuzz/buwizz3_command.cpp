@@ -9,6 +9,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::span<const std::uint8_t> in(data, size);
     const auto cmd = robowire::buwizz3::decode_command(in);
     fuzz::check_text(cmd);
+    fuzz::check_decode_into<robowire::buwizz3::command>(in);
     if (!cmd) {
         FUZZ_CHECK(cmd.error().offset <= size);
         return 0;

@@ -32,6 +32,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::span<const std::uint8_t> in(data, size);
     const auto n = bw::decode_notification(in);
     fuzz::check_text(n);
+    fuzz::check_decode_into<bw::notification>(in);
     if (!n) {
         FUZZ_CHECK(n.error().offset <= size);
         return 0;

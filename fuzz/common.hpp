@@ -12,6 +12,7 @@
 #include <cstring>
 #include <span>
 #include <string_view>
+#include <utility>
 #include <variant>
 
 // A decoder harness names its protocol's variant: FUZZ_STRUCTURE_AWARE(osp::message).
@@ -114,6 +115,38 @@ robowire::bytes<robowire::max_size_v<M>> without_reserved(std::span<const std::u
     for (std::size_t i = 0; i < out.size(); ++i)
         if (reserved[i]) out[i] = 0;
     return out;
+}
+
+// decode_into of every message of Variant on `in`: an error leaves the
+// object exactly as it was (every byte, padding included); a success gives
+// decode()'s message.
+inline void escape(void* p) { asm volatile("" : : "r"(p) : "memory"); }  // its bytes read from memory as they are
+template <class M>
+void check_decode_into_one(std::span<const std::uint8_t> in) {
+    M obj{};
+    escape(&obj);
+    unsigned char before[sizeof(M)], after[sizeof(M)];
+    std::memcpy(before, static_cast<const void*>(&obj), sizeof(M));
+    const robowire::error e = robowire::decode_into(obj, in);
+    escape(&obj);
+    std::memcpy(after, static_cast<const void*>(&obj), sizeof(M));
+    if (e.code != robowire::errc::ok) {
+        FUZZ_CHECK(std::memcmp(before, after, sizeof(M)) == 0);
+    } else {
+        const auto r = robowire::decode<M>(in);
+        FUZZ_CHECK(r.has_value());
+        const auto a = robowire::encode(*r), b = robowire::encode(obj);
+        FUZZ_CHECK(a.has_value() == b.has_value());
+        if (a && b) FUZZ_CHECK(same_bytes(*a, *b));
+    }
+}
+template <class Variant, std::size_t... I>
+void check_decode_into_each(std::span<const std::uint8_t> in, std::index_sequence<I...>) {
+    (check_decode_into_one<std::variant_alternative_t<I, Variant>>(in), ...);
+}
+template <class Variant>
+void check_decode_into(std::span<const std::uint8_t> in) {
+    check_decode_into_each<Variant>(in, std::make_index_sequence<std::variant_size_v<Variant>>{});
 }
 
 // The structure-aware round trip: encode(m) either fails with a field error

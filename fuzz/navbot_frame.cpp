@@ -31,6 +31,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::span<const std::uint8_t> in(data, size);
     const auto m = nb::decode_frame(in);
     fuzz::check_text(m);
+    fuzz::check_decode_into<nb::message>(in);
     if (!m) {
         FUZZ_CHECK(m.error().offset <= size);
     } else if (const auto* man = std::get_if<nb::maneuver>(&*m)) {

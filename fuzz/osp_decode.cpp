@@ -46,7 +46,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (f) FUZZ_CHECK(*m.frame() == *f);  // the same DEV, CMD and P1..P4
     // Only on frames decode<osp::frame> accepts: on every input, the eleven
     // decodes cut libFuzzer's speed to a third.
-    if (f) check_alternatives(in, m, std::make_index_sequence<std::variant_size_v<osp::message>>{});
+    if (f) {
+        check_alternatives(in, m, std::make_index_sequence<std::variant_size_v<osp::message>>{});
+        fuzz::check_decode_into<osp::message>(in);
+    }
     if (!m) {
         FUZZ_CHECK(m.error().offset <= size);
         return 0;
