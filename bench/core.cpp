@@ -76,6 +76,36 @@ bench::hw::error hw_to_hex(const std::uint8_t* p, std::size_t n, char* out, std:
     }
     return bench::hw::good;
 }
+// The careful version: a 256-entry table of digit pairs, no test in the loop
+// (the last byte's pair written after it), the size check first.
+constexpr auto hex_pairs = [] {
+    std::array<std::array<char, 2>, 256> t{};
+    constexpr char digits[] = "0123456789ABCDEF";
+    for (std::size_t i = 0; i < 256; ++i) t[i] = {digits[i >> 4], digits[i & 15]};
+    return t;
+}();
+inline bench::hw::error careful_to_hex(const std::uint8_t* p, std::size_t n, char* out, std::size_t size) {
+    const std::size_t need = n ? 3 * n - 1 : 0;
+    if (need > size) [[unlikely]] return bench::hw::fail(bench::hw::buffer_too_small, need);
+    if (n == 0) return bench::hw::good;
+    for (std::size_t k = 0; k + 1 < n; ++k, out += 3) {
+        std::memcpy(out, hex_pairs[p[k]].data(), 2);
+        out[2] = ' ';
+    }
+    std::memcpy(out, hex_pairs[p[n - 1]].data(), 2);
+    return bench::hw::good;
+}
+void hex_careful(benchmark::State& state) {
+    const auto buf = random_bytes(68 * bench::variants);
+    std::array<char, 3 * 68> out{};
+    bench::in_memory(out);
+    std::size_t i = 0;
+    for (auto _ : bench::measure(state)) {
+        bench::consume(careful_to_hex(buf.data() + 68 * (i++ % bench::variants), 68, out.data(), out.size()));
+        benchmark::ClobberMemory();
+    }
+    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * 68);
+}
 void hex_handwritten(benchmark::State& state) {
     const auto buf = random_bytes(68 * bench::variants);
     std::array<char, 3 * 68> out{};
@@ -95,3 +125,4 @@ BENCHMARK(load_f32_robowire)->Name("core.load_f32:robowire")->Apply(bench::round
 BENCHMARK(load_f32_memcpy)->Name("core.load_f32:memcpy")->Apply(bench::rounds<4096>);
 BENCHMARK(hex_robowire)->Name("core.to_hex_68:robowire")->Apply(bench::rounds<64>);
 BENCHMARK(hex_handwritten)->Name("core.to_hex_68:handwritten")->Apply(bench::rounds<64>);
+BENCHMARK(hex_careful)->Name("core.to_hex_68:careful")->Apply(bench::rounds<64>);

@@ -192,6 +192,16 @@ template <std::size_t N, std::size_t M>
     return a.size() == b.size() && detail::same_bytes(a.data(), b.data(), a.size());
 }
 
+namespace detail {
+// The two upper-case hex digits of each byte value (to_hex at speed).
+inline constexpr auto hex_pairs = [] {
+    std::array<std::array<char, 2>, 256> t{};
+    constexpr char digits[] = "0123456789ABCDEF";
+    for (std::size_t i = 0; i < 256; ++i) t[i] = {digits[i >> 4], digits[i & 15]};
+    return t;
+}();
+}  // namespace detail
+
 // Characters to_hex writes for n bytes (with a separator: 3n - 1, else 2n).
 [[nodiscard]] constexpr std::size_t hex_size(std::size_t n, char separator = ' ') noexcept {
     if (n == 0) return 0;
@@ -206,6 +216,21 @@ template <std::size_t N, std::size_t M>
     const std::size_t need = hex_size(in.size(), separator);
     if (need > out.size()) return fail(errc::buffer_too_small, need);
     char* o = out.data();
+    if constexpr (!ROBOWIRE_OPTIMIZE_SIZE) {  // a pair of digits per table entry, the separator test outside the loop
+        if (!std::is_constant_evaluated() && !in.empty()) {
+            const std::size_t last = in.size() - 1;
+            if (separator) {
+                for (std::size_t i = 0; i < last; ++i, o += 3) {
+                    std::memcpy(o, detail::hex_pairs[in[i]].data(), 2);
+                    o[2] = separator;
+                }
+            } else {
+                for (std::size_t i = 0; i < last; ++i, o += 2) std::memcpy(o, detail::hex_pairs[in[i]].data(), 2);
+            }
+            std::memcpy(o, detail::hex_pairs[in[last]].data(), 2);
+            return need;
+        }
+    }
     const auto put = [&](std::uint8_t b) {
         *o++ = digits[b >> 4];
         *o++ = digits[b & 0x0F];
