@@ -114,8 +114,9 @@ template <bool RuntimeLength>
 void voltage_rw(benchmark::State& state) {
     const auto v = voltage_frames();
     const bench::vector<std::size_t> len(v.size(), 10);
+    const std::size_t count = v.size();  // in a register: not reloaded after each clobber
     for (auto _ : bench::measure(state)) {
-        for (std::size_t i = 0; i < v.size(); ++i) {
+        for (std::size_t i = 0; i < count; ++i) {
             const auto r = robowire::decode<osp::obp1::voltage>(std::span(v[i]).first(RuntimeLength ? len[i] : 10));
             bench::consume(r);
         }
@@ -127,8 +128,9 @@ void voltage_careful(benchmark::State& state) {
     const auto v = voltage_frames();
     const bench::vector<std::size_t> len(v.size(), 10);
     std::int16_t cv = 0;
+    const std::size_t count = v.size();  // in a register: not reloaded after each clobber
     for (auto _ : bench::measure(state)) {
-        for (std::size_t i = 0; i < v.size(); ++i) {
+        for (std::size_t i = 0; i < count; ++i) {
             bench::consume(careful_voltage(v[i].data(), RuntimeLength ? len[i] : 10, cv));
             benchmark::DoNotOptimize(cv);
         }
@@ -139,8 +141,9 @@ template <bool RuntimeLength>
 void dispatch_rw(benchmark::State& state) {
     const auto v = frames();
     const bench::vector<std::size_t> len(v.size(), 10);
+    const std::size_t count = v.size();  // in a register: not reloaded after each clobber
     for (auto _ : bench::measure(state)) {
-        for (std::size_t i = 0; i < v.size(); ++i) {
+        for (std::size_t i = 0; i < count; ++i) {
             auto r = osp::decode(std::span(v[i]).first(RuntimeLength ? len[i] : 10));
             benchmark::DoNotOptimize(r);
         }
@@ -153,8 +156,9 @@ void dispatch_careful(benchmark::State& state) {
     const bench::vector<std::size_t> len(v.size(), 10);
     hw_msg m{};
     bench::in_memory(m);
+    const std::size_t count = v.size();  // in a register: not reloaded after each clobber
     for (auto _ : bench::measure(state)) {
-        for (std::size_t i = 0; i < v.size(); ++i) {
+        for (std::size_t i = 0; i < count; ++i) {
             bench::consume(careful_decode_any(v[i].data(), RuntimeLength ? len[i] : 10, m));
             benchmark::ClobberMemory();  // the escaped output is written
         }

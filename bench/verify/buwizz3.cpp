@@ -99,21 +99,26 @@ int main() {
     const int bad30[8] = {-128, -128, -128, -128, -128, -128, 0x40, 0xFF};
     for (const auto& base : motor_inputs()) {
         check_encode("encode 0x30", base, hw_encode_motor, "bench");
+        check_encode("encode 0x30 careful", base, careful_encode_motor, "bench");
         sweep_fields(base, 8, power_flags(6), bad30, [](const bw::set_motor_data& m, const std::string& ctx) {
             check_encode("encode 0x30", m, hw_encode_motor, ctx);
+        check_encode("encode 0x30 careful", m, careful_encode_motor, ctx);
         });
     }
     // ---- 0x31
     const int bad31[4] = {-128, -128, 0x80, 0x40};
     for (const auto& base : motor_ext_inputs()) {
         check_encode("encode 0x31", base, hw_encode_motor_ext, "bench");
+        check_encode("encode 0x31 careful", base, careful_encode_motor_ext, "bench");
         sweep_fields(base, 4, power_flags(2), bad31, [](const bw::set_motor_data_extended& m, const std::string& ctx) {
             check_encode("encode 0x31", m, hw_encode_motor_ext, ctx);
+        check_encode("encode 0x31 careful", m, careful_encode_motor_ext, ctx);
         });
         for (std::uint32_t x : {0u, 1u, 0x80000000u, 0xFFFFFFFFu, 0x7FFFFFFFu}) {
             auto m = base;
             m.reference[x % 4] = static_cast<std::int32_t>(x);
             check_encode("encode 0x31", m, hw_encode_motor_ext, "ref");
+        check_encode("encode 0x31 careful", m, careful_encode_motor_ext, "ref");
         }
     }
     // ---- 0x53
@@ -129,14 +134,17 @@ int main() {
     const int bad53[5] = {4, 0, -1, -128, 0x13};
     for (const auto& base : pid_inputs()) {
         check_encode("encode 0x53", base, hw_encode_pid, "bench");
+        check_encode("encode 0x53 careful", base, careful_encode_pid, "bench");
         sweep_fields(base, 5, set, bad53, [](const bw::set_pid_parameters& m, const std::string& ctx) {
             check_encode("encode 0x53", m, hw_encode_pid, ctx);
+        check_encode("encode 0x53 careful", m, careful_encode_pid, ctx);
         });
         for (float f : {std::numeric_limits<float>::quiet_NaN(), -0.0f, std::numeric_limits<float>::infinity(), 1e-40f}) {
             auto m = base;
             m.kd = f;
             m.out_lp = -f;
             check_encode("encode 0x53", m, hw_encode_pid, "float");
+        check_encode("encode 0x53 careful", m, careful_encode_pid, "float");
         }
     }
     return report();

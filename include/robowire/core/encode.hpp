@@ -74,7 +74,7 @@ constexpr error encode_into(const M& m, std::uint8_t* out_data, std::size_t out_
     set_written(written, codec::unchecked_value(size));
     clear_bytes<M>(dst);
     write_fixed<M>(dst, std::make_index_sequence<fixed_count_v<M>>{});
-    if constexpr (sizeof(M) > 16 && !ROBOWIRE_OPTIMIZE_SIZE) {
+    if constexpr (sizeof(M) > 16 && !ROBOWIRE_OPTIMIZE_SIZE && !ROBOWIRE_COPY_RUNS) {  // (runs: copied at once)
         const M copy =
             m;  // a local cannot alias `out`: its loads need not wait behind byte stores, so wide fields merge
         store_record<M>(copy, dst, 0, fields);

@@ -4,6 +4,7 @@
 
 #include "../config.hpp"  // first: the C++ version check
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -146,4 +147,74 @@ constexpr bool flat_record() noexcept {
 template <class M>
 inline constexpr bool flat_record_v = flat_record<M>();
 
+// ---- runs (ROBOWIRE_COPY_RUNS, at run time; decode and encode): fields
+// whose wire bytes are their members' bytes, next to each other on the wire
+// and in memory, are copied at once. Member offsets are taken from the
+// object: constants once inlined, so the tests fold away and each run is one
+// memcpy of a constant size; the code stays correct if they do not.
+
+// A scalar of wire type W whose wire bytes are the bytes of an E holding it
+// (the value is checked already): same size, no conversion, host order.
+template <class W, class E>
+inline constexpr bool same_bytes_v = [] {
+    if constexpr (!scalar_wire_v<W> || W::kind == wire_kind::bits || std::is_same_v<E, bool>) return false;
+    else if constexpr (W::kind == wire_kind::f32le) return std::is_same_v<E, float> && sizeof(float) == 4;
+    else if constexpr (!std::is_integral_v<E> && !std::is_enum_v<E>) return false;
+    else if constexpr (sizeof(E) != sizeof(typename W::raw_type)) return false;
+    else return sizeof(E) == 1 || std::endian::native == std::endian::little;
+}();
+struct run {
+    std::size_t wire = 0, mem = 0, size = 0;  // byte offsets in the input and in the object; 0: no run
+};
+template <class M>
+inline std::size_t offset_in(const M& m, const void* member) noexcept {
+    return static_cast<std::size_t>(static_cast<const unsigned char*>(member) -
+                                    reinterpret_cast<const unsigned char*>(&m));
+}
+template <class E>
+ROBOWIRE_ALWAYS_INLINE std::size_t record_copy_size(const E& e) noexcept;
+// Field I of M copied as bytes: its size on the wire, or 0 if it is not a copy.
+template <class M, std::size_t I>
+ROBOWIRE_ALWAYS_INLINE std::size_t field_copy_size(const M& m) noexcept {
+    using F = field_t<M, I>;
+    using E = typename F::element_type;
+    constexpr auto member_ptr = field_v<M, I>.member;
+    if constexpr (F::is_optional) {
+        return 0;
+    } else if constexpr (F::kind == wire_kind::record) {
+        const auto& first = [&]() -> const E& {
+            if constexpr (F::is_array) return (m.*member_ptr)[0];
+            else return m.*member_ptr;
+        }();
+        const std::size_t n = record_copy_size(first);
+        if constexpr (F::is_array) return n == sizeof(E) && F::element_size == sizeof(E) ? F::count * sizeof(E) : 0;
+        else return n == F::element_size ? n : 0;
+    } else if constexpr (same_bytes_v<typename F::wire_type, E>) {
+        return F::count * sizeof(E);
+    } else {
+        return 0;
+    }
+}
+// A record E copied as bytes: the end of its last field, if every member is a
+// field copied as bytes at its own wire offset; else 0.
+template <class E>
+ROBOWIRE_ALWAYS_INLINE std::size_t record_copy_size(const E& e) noexcept {
+    if constexpr (!decode_writes_every_member_v<E> || reports_trailing<E>) {
+        return 0;
+    } else {
+        return [&]<std::size_t... J>(std::index_sequence<J...>) {
+            constexpr std::size_t covered = (field_t<E, J>::size + ... + 0);  // no byte between the fields
+            std::size_t end = 0;
+            const bool all = ((field_copy_size<E, J>(e) == field_t<E, J>::size &&
+                               offset_in(e, &(e.*(field_v<E, J>.member))) == field_v<E, J>.offset &&
+                               ((end = end > field_v<E, J>.offset + field_t<E, J>::size
+                                           ? end
+                                           : field_v<E, J>.offset + field_t<E, J>::size),
+                                true)) &&
+                              ...);
+            return all && end == covered ? end : 0;
+        }
+        (std::make_index_sequence<field_count_v<E>>{});
+    }
+}
 }  // namespace robowire::detail

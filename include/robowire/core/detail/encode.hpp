@@ -195,10 +195,43 @@ ROBOWIRE_ALWAYS_INLINE constexpr void store_field(const M& m, std::span<std::uin
     }
 }
 
+// ---- runs (ROBOWIRE_COPY_RUNS; access.hpp), the encode side: a run is
+// copied from the object into the output.
+template <class M>
+ROBOWIRE_ALWAYS_INLINE void store_run(const M& m, std::span<std::uint8_t> out, const run& r) noexcept {
+    if (r.size != 0) std::memcpy(out.data() + r.wire, reinterpret_cast<const unsigned char*>(&m) + r.mem, r.size);
+}
+// Field I: joins the current run, starts one, or is stored on its own.
+template <class M, std::size_t I>
+ROBOWIRE_ALWAYS_INLINE void copy_or_store(const M& m, std::span<std::uint8_t> out, std::size_t base, run& r) noexcept {
+    const std::size_t size = field_copy_size<M, I>(m);
+    if (size != 0) {
+        const std::size_t wire = base + field_v<M, I>.offset, mem = offset_in(m, &(m.*(field_v<M, I>.member)));
+        if (r.size != 0 && r.wire + r.size == wire && r.mem + r.size == mem) {
+            r.size += size;
+        } else {
+            store_run(m, out, r);
+            r = {wire, mem, size};
+        }
+    } else {
+        store_run(m, out, r);
+        r = {};
+        store_field<M, I>(m, out, base);
+    }
+}
+
 template <class M, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr void store_record(const M& m, std::span<std::uint8_t> out, std::size_t base,
                                                    std::index_sequence<I...>) noexcept {
     (void)m, (void)out, (void)base;  // messages without fields
+    if constexpr (ROBOWIRE_COPY_RUNS) {
+        if (!std::is_constant_evaluated()) {
+            run r{};
+            (copy_or_store<M, I>(m, out, base, r), ...);
+            store_run(m, out, r);
+            return;
+        }
+    }
     (store_field<M, I>(m, out, base), ...);
 }
 
