@@ -44,8 +44,20 @@ TEST_CASE("osp: integer unit helpers, document scale", "[osp][units]") {
     STATIC_REQUIRE(obp1::soc_from_basis_points(10001).code() == errc::value_out_of_range);
 }
 
-// The integer helpers divide by a multiply (no __udivsi3 / __divsi3 on a core
-// without a divide instruction): equal to the plain division on every input.
+// The integer helpers divide by a multiply on a core without a divide
+// instruction (no __aeabi_uidiv / __aeabi_idiv linked): that form is exact on
+// its whole input range, whichever form this build's helpers use.
+template <class Divider, std::uint32_t D>
+std::size_t multiply_mismatches() {
+    std::size_t bad = 0;
+    for (std::uint32_t n = 0; n <= Divider::max; ++n) bad += Divider::by_multiply(n) != n / D;
+    return bad;
+}
+TEST_CASE("osp: the integer helpers' divisions by a multiply are exact", "[osp][units]") {
+    CHECK(multiply_mismatches<obp1::units_detail::millivolts_by_10, 10>() == 0);
+    CHECK(multiply_mismatches<obp1::units_detail::sixteenths_by_625, 625>() == 0);
+}
+// ... and the helpers equal the plain division on every input.
 TEST_CASE("osp: integer unit helpers equal the exact division on every input", "[osp][units]") {
     std::size_t bad = 0;
     for (std::uint32_t raw = 0; raw <= 65535; ++raw) {  // raw x 10000 / 65535 rounded

@@ -44,6 +44,11 @@ constexpr result<std::uint16_t> angle_from_radians(double radians, scale s = sca
 }  // namespace arm1
 
 namespace obp1 {
+namespace units_detail {
+// The divisions of the integer forms below (see robowire/core/detail/divide.hpp).
+using millivolts_by_10 = robowire::detail::divider<10, 327689, 6554, 16, 2>;            // (|mv| + 5) / 10
+using sixteenths_by_625 = robowire::detail::divider<625, (55355000 >> 4), 839, 19, 1>;  // (bp x 5535 + 5000) / 16 / 625
+}  // namespace units_detail
 // ---- integer forms (no floating point)
 // Battery voltage in millivolts: raw x 10 (document, -327680..327670) or raw (published firmware).
 constexpr std::int32_t millivolts(std::int16_t raw, scale s = scale::document) noexcept {
@@ -71,7 +76,8 @@ constexpr std::uint16_t soc_basis_points(const soc& m, scale s = scale::document
 }
 // Raw voltage for `mv` millivolts (document: mv / 10 rounded half away from
 // zero; published firmware: mv); value_out_of_range (offset 4) if it does not
-// fit the i16 field (document: mv outside -327684..327674). No division.
+// fit the i16 field (document: mv outside -327684..327674). No library
+// division on a core without a divide instruction.
 constexpr result<std::int16_t> voltage_from_millivolts(std::int32_t mv, scale s = scale::document) noexcept {
     if (s == scale::published_firmware) {
         if (mv < -32768 || mv > 32767) return fail(errc::value_out_of_range, 4);
@@ -79,19 +85,18 @@ constexpr result<std::int16_t> voltage_from_millivolts(std::int32_t mv, scale s 
     }
     if (mv < -327684 || mv > 327674) return fail(errc::value_out_of_range, 4);
     const std::uint32_t n = (mv < 0 ? 0u - static_cast<std::uint32_t>(mv) : static_cast<std::uint32_t>(mv)) + 5u;
-    const std::uint32_t q = detail::divide<10, 327689, 6554, 16, 2>(n);  // (|mv| + 5) / 10
+    const std::uint32_t q = units_detail::millivolts_by_10{}(n);
     return static_cast<std::int16_t>(mv < 0 ? -static_cast<std::int32_t>(q) : static_cast<std::int32_t>(q));
 }
 // Raw SOC for `bp` basis points (0..10000; document: bp x 65535 / 10000
 // rounded half up, published firmware: bp); value_out_of_range (offset 4)
-// above 10000. No division.
+// above 10000. No library division on a core without a divide instruction.
 constexpr result<std::uint16_t> soc_from_basis_points(std::uint16_t bp, scale s = scale::document) noexcept {
     if (bp > 10000) return fail(errc::value_out_of_range, 4);
     if (s == scale::published_firmware) return bp;
     // bp x 65535 + 5000 = bp x 60000 + (bp x 5535 + 5000), and floor(w / 10000) = floor(floor(w / 16) / 625)
     const std::uint32_t w = std::uint32_t{bp} * 5535u + 5000u;  // at most 55355000
-    return static_cast<std::uint16_t>(std::uint32_t{bp} * 6u +
-                                      detail::divide<625, (55355000 >> 4), 839, 19, 1>(w >> 4));
+    return static_cast<std::uint16_t>(std::uint32_t{bp} * 6u + units_detail::sixteenths_by_625{}(w >> 4));
 }
 
 // ---- double forms
