@@ -8,6 +8,9 @@ process a batch of messages per iteration report the time per message."""
 import json, sys
 from collections import defaultdict
 
+if sys.argv[1:2] in (["-h"], ["--help"]):  # usage: the docstring
+    print(__doc__)
+    sys.exit(0)
 data = json.load(open(sys.argv[1]))
 rows = defaultdict(dict)
 for b in data["benchmarks"]:

@@ -10,6 +10,9 @@ import subprocess
 import sys
 import tempfile
 
+if sys.argv[1:2] in (["-h"], ["--help"]):  # usage: the docstring
+    print(__doc__)
+    sys.exit(0)
 check = pathlib.Path(__file__).resolve().parent / "check"
 if len(sys.argv) != 3:
     sys.exit(__doc__)

@@ -5,7 +5,6 @@
 namespace {
 struct command {
     std::uint8_t kind;  // the command byte
-    std::uint8_t size;  // 0x36: 1, 13 or 17
     union {
         char name[12];
         struct { std::uint8_t enabled; std::uint32_t idle, sleep; } wakeup;
@@ -14,7 +13,7 @@ struct command {
         struct { std::int32_t ref[4]; std::int8_t power[2]; std::uint8_t brake, lut; } motor_ext;
         std::uint8_t one;  // 0x32, 0x34, 0x35, 0x37, 0x51
         std::uint8_t ramps[12];
-        std::uint8_t led[16];
+        struct { bool has_colors, has_blink; std::uint8_t rgb[12], frequency_hz[4], duty[4]; } led;
         std::uint8_t limits[6];
         struct { std::uint8_t channel; std::uint32_t baud; } uart;
         std::uint8_t functions[4];
@@ -56,7 +55,6 @@ HW_CODEC hw::error decode_command(const std::uint8_t* p, std::size_t n, command&
     } else if (auto e = hw::length(n, want); e.code) {
         return e;
     }
-    c.size = static_cast<std::uint8_t>(n);
     switch (p[0]) {
     case 0x20: {
         std::size_t len = 0;
@@ -91,7 +89,17 @@ HW_CODEC hw::error decode_command(const std::uint8_t* p, std::size_t n, command&
     case 0x33: std::memcpy(c.ramps, p + 1, 12); return hw::good;
     case 0x34: c.one = p[1]; return p[1] != 255 ? hw::good : hw::fail(hw::value_out_of_range, 1);
     case 0x35: c.one = p[1]; return hw::good;
-    case 0x36: std::memcpy(c.led, p + 1, n - 1); return hw::good;
+    case 0x36:  // colours (r, g, b per port), then blink (frequency << 4 | duty per port)
+        c.led.has_colors = n >= 13;
+        c.led.has_blink = n == 17;
+        if (c.led.has_colors) std::memcpy(c.led.rgb, p + 1, 12);
+        if (c.led.has_blink) {
+            for (std::size_t i = 0; i < 4; ++i) {
+                c.led.frequency_hz[i] = static_cast<std::uint8_t>(p[13 + i] >> 4);
+                c.led.duty[i] = p[13 + i] & 15;
+            }
+        }
+        return hw::good;
     case 0x37: c.one = p[1]; return valid_lpf(p[1]) ? hw::good : hw::fail(hw::invalid_enum, 1);
     case 0x38: std::memcpy(c.limits, p + 1, 6); return hw::good;
     case 0x40:
@@ -126,7 +134,7 @@ HW_CODEC hw::error decode_command(const std::uint8_t* p, std::size_t n, command&
 
 // Encodes c into out (at least 38 bytes); checks every field first. Returns the length, 0 on error.
 HW_CODEC std::size_t encode_command(const command& c, std::uint8_t* out, hw::error& e) {
-    std::size_t n = c.kind == 0x36 ? c.size : wire_size(c.kind);
+    std::size_t n = c.kind == 0x36 ? 1u + (c.led.has_colors ? 12u : 0u) + (c.led.has_blink ? 4u : 0u) : wire_size(c.kind);
     e = hw::good;
     switch (c.kind) {
     case 0x21:
@@ -137,7 +145,12 @@ HW_CODEC std::size_t encode_command(const command& c, std::uint8_t* out, hw::err
     case 0x31: e = check_power(c.motor_ext.power, 2, 17); if (!e.code) e = check_flags(c.motor_ext.brake, c.motor_ext.lut, 19); break;
     case 0x32: if (c.one < 20) e = hw::fail(hw::value_out_of_range, 1); break;
     case 0x34: if (c.one == 255) e = hw::fail(hw::value_out_of_range, 1); break;
-    case 0x36: if (n != 1 && n != 13 && n != 17) e = hw::fail(hw::bad_length, n); break;
+    case 0x36:
+        if (c.led.has_blink && !c.led.has_colors) e = hw::fail(hw::missing_field, 1);
+        else if (c.led.has_blink)
+            for (std::size_t i = 0; i < 4 && !e.code; ++i)
+                if ((c.led.frequency_hz[i] | c.led.duty[i]) > 15) e = hw::fail(hw::value_out_of_range, 13 + i);
+        break;
     case 0x37: if (!valid_lpf(c.one)) e = hw::fail(hw::invalid_enum, 1); break;
     case 0x50: for (std::size_t i = 0; i < 4 && !e.code; ++i) if (!valid_function(c.functions[i])) e = hw::fail(hw::invalid_enum, 1 + i); break;
     case 0x51: if (c.one > 4) e = hw::fail(hw::value_out_of_range, 1); break;
@@ -171,7 +184,12 @@ HW_CODEC std::size_t encode_command(const command& c, std::uint8_t* out, hw::err
         break;
     case 0x32: case 0x34: case 0x35: case 0x37: case 0x51: out[1] = c.one; break;
     case 0x33: std::memcpy(out + 1, c.ramps, 12); break;
-    case 0x36: std::memcpy(out + 1, c.led, n - 1); break;
+    case 0x36:
+        if (c.led.has_colors) std::memcpy(out + 1, c.led.rgb, 12);
+        if (c.led.has_blink)
+            for (std::size_t i = 0; i < 4; ++i)
+                out[13 + i] = static_cast<std::uint8_t>(c.led.frequency_hz[i] << 4 | c.led.duty[i]);
+        break;
     case 0x38: std::memcpy(out + 1, c.limits, 6); break;
     case 0x40: out[1] = 0x10; out[2] = c.uart.channel; hw::wr32(out + 3, c.uart.baud); break;
     case 0x50: std::memcpy(out + 1, c.functions, 4); break;

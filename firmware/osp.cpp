@@ -11,6 +11,7 @@ ENTRY void osp_decode(std::span<const std::uint8_t> b) {
 }
 // Alternative `which` of the variant (the protocol's one list), its integer
 // and enum fields set from `value` (invalid codes too: encode rejects them).
+// `which` is clamped, not taken modulo: no division routine in the program.
 template <std::size_t... I>
 osp::message make_message(std::size_t which, std::uint16_t value, std::index_sequence<I...>) {
     osp::message m;
@@ -26,7 +27,7 @@ osp::message make_message(std::size_t which, std::uint16_t value, std::index_seq
 }
 ENTRY void osp_encode(std::size_t which, std::uint16_t value) {
     constexpr std::size_t n = std::variant_size_v<osp::message>;
-    const osp::message m = make_message(which % n, value, std::make_index_sequence<n>{});
+    const osp::message m = make_message(which < n ? which : n - 1, value, std::make_index_sequence<n>{});
     const auto r = osp::encode(m);
     if (r) out(*r);
 }

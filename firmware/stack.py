@@ -78,6 +78,9 @@ def external_frames(elf):
 
 
 def main():
+    if sys.argv[1:2] in (["-h"], ["--help"]) or len(sys.argv) < 3:
+        print(__doc__)
+        sys.exit(0 if len(sys.argv) == 2 else 2)
     elf, ci, entries = sys.argv[1], sys.argv[2], sys.argv[3:]
     nodes, edges, notes = parse_ci(ci)
     ext = external_frames(elf)

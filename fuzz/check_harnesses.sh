@@ -3,6 +3,7 @@
 # fuzz/*.cpp that defines LLVMFuzzerTestOneInput is listed, every listed name has its
 # source, corpus folder and dictionary; those marked `mutator` name their
 # variant with FUZZ_STRUCTURE_AWARE, and only those.
+case "${1:-}" in -h | --help) sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;; esac  # usage: the comment above
 cd "$(dirname "$0")"
 rc=0
 listed=$(grep -v '^[[:space:]]*\(#\|$\)' harnesses.txt)

@@ -2,8 +2,11 @@
 """Writes the seed corpora: the golden vectors of the unit tests (worked out by
 hand from the protocol documents) plus edge cases. Run from the repository
 root; files are named by content, so re-running adds nothing twice."""
-import hashlib, os
+import hashlib, os, sys
 
+if sys.argv[1:2] in (["-h"], ["--help"]):  # usage: the docstring
+    print(__doc__)
+    sys.exit(0)
 def h(s): return bytes.fromhex(s.replace(' ', ''))
 
 buwizz3_commands = [

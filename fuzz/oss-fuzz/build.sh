@@ -10,6 +10,7 @@
 # Local test:
 #   CXX=clang++ CXXFLAGS="-fsanitize=address,fuzzer-no-link -O1 -g" \
 #   LIB_FUZZING_ENGINE=-fsanitize=fuzzer OUT=/tmp/out fuzz/oss-fuzz/build.sh
+case "${1:-}" in -h | --help) sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;; esac  # usage: the comment above
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 [ -f "$root/fuzz/harnesses.txt" ] || root="$PWD"
 mkdir -p "$OUT"

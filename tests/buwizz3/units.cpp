@@ -154,6 +154,18 @@ TEST_CASE("buwizz3: status units in integers", "[buwizz3][units]") {
     STATIC_REQUIRE(accel_milli_g_rounded(2) == 1);     // 0.976
     STATIC_REQUIRE(accel_milli_g_rounded(-32768) == -15991);  // -15990.784
     STATIC_REQUIRE(accel_milli_g_rounded(32767) == 15990);    // 15990.296
+    // equal to the plain division on every word; the multiply form (a core without a
+    // divide instruction) exact on its whole input range
+    std::size_t bad = 0;
+    for (std::uint32_t n = 0; n <= units_detail::milli_g_by_125::max; ++n)
+        bad += units_detail::milli_g_by_125::by_multiply(n) != n / 125;
+    CHECK(bad == 0);
+    bad = 0;
+    for (std::int32_t w = -32768; w <= 32767; ++w) {
+        const std::int32_t ug = w * 488;
+        bad += accel_milli_g_rounded(static_cast<std::int16_t>(w)) != (ug < 0 ? ug - 500 : ug + 500) / 1000;
+    }
+    CHECK(bad == 0);
     // from a status report
     constexpr status s = [] {
         status st{};

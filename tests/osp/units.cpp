@@ -2,6 +2,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <limits>
 #include <numbers>
 
 #include "check.hpp"
@@ -41,6 +42,52 @@ TEST_CASE("osp: integer unit helpers, document scale", "[osp][units]") {
     STATIC_REQUIRE(obp1::soc_from_basis_points(10000).value() == 65535);
     STATIC_REQUIRE(obp1::soc_from_basis_points(5000).value() == 32768);  // 32767.5 rounds up
     STATIC_REQUIRE(obp1::soc_from_basis_points(10001).code() == errc::value_out_of_range);
+}
+
+// The integer helpers divide by a multiply on a core without a divide
+// instruction (no __aeabi_uidiv / __aeabi_idiv linked): that form is exact on
+// its whole input range, whichever form this build's helpers use.
+template <class Divider, std::uint32_t D>
+std::size_t multiply_mismatches() {
+    std::size_t bad = 0;
+    for (std::uint32_t n = 0; n <= Divider::max; ++n) bad += Divider::by_multiply(n) != n / D;
+    return bad;
+}
+TEST_CASE("osp: the integer helpers' divisions by a multiply are exact", "[osp][units]") {
+    CHECK(multiply_mismatches<obp1::units_detail::millivolts_by_10, 10>() == 0);
+    CHECK(multiply_mismatches<obp1::units_detail::sixteenths_by_625, 625>() == 0);
+}
+// ... and the helpers equal the plain division on every input.
+TEST_CASE("osp: integer unit helpers equal the exact division on every input", "[osp][units]") {
+    std::size_t bad = 0;
+    for (std::uint32_t raw = 0; raw <= 65535; ++raw) {  // raw x 10000 / 65535 rounded
+        const auto exact = static_cast<std::uint16_t>((raw * 10000u + 32767u) / 65535u);
+        bad += obp1::soc_basis_points(static_cast<std::uint16_t>(raw)) != exact;
+    }
+    CHECK(bad == 0);
+    bad = 0;
+    for (std::uint32_t bp = 0; bp <= 65535; ++bp) {  // bp x 65535 / 10000 rounded half up; above 10000 an error
+        const auto r = obp1::soc_from_basis_points(static_cast<std::uint16_t>(bp));
+        if (bp > 10000) bad += r.error() != error{errc::value_out_of_range, 4};
+        else bad += !r || *r != static_cast<std::uint16_t>((bp * 65535u + 5000u) / 10000u);
+    }
+    CHECK(bad == 0);
+    bad = 0;
+    // mv / 10 rounded half away from zero: every mv that divides (|mv| + 5 <= 327689) and a margin of
+    // errors on both sides; beyond it only the range check runs (the ends of the i32 range below)
+    for (std::int32_t mv = -400000; mv <= 400000; ++mv) {
+        const std::int32_t exact = (mv < 0 ? mv - 5 : mv + 5) / 10;
+        const auto r = obp1::voltage_from_millivolts(mv);
+        if (exact < -32768 || exact > 32767) bad += r.error() != error{errc::value_out_of_range, 4};
+        else bad += !r || *r != exact;
+    }
+    CHECK(bad == 0);
+    CHECK(obp1::voltage_from_millivolts(std::numeric_limits<std::int32_t>::max()).code() == errc::value_out_of_range);
+    CHECK(obp1::voltage_from_millivolts(std::numeric_limits<std::int32_t>::min()).code() == errc::value_out_of_range);
+    STATIC_REQUIRE(obp1::voltage_from_millivolts(327674).value() == 32767);  // the ends of the range
+    STATIC_REQUIRE(obp1::voltage_from_millivolts(327675).code() == errc::value_out_of_range);
+    STATIC_REQUIRE(obp1::voltage_from_millivolts(-327684).value() == -32768);
+    STATIC_REQUIRE(obp1::voltage_from_millivolts(-327685).code() == errc::value_out_of_range);
 }
 
 TEST_CASE("osp: unit helpers, published firmware scale", "[osp][units]") {

@@ -9,6 +9,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "../core/detail/divide.hpp"
 #include "commands.hpp"
 #include "status.hpp"
 
@@ -126,10 +127,17 @@ constexpr std::uint16_t motor_milliamps(std::uint8_t raw) noexcept { return stat
 // Acceleration in micro-g: word x 488 (the 16-bit word, not the 12-bit count;
 // -15990784..15990296).
 constexpr std::int32_t accel_micro_g(std::int16_t word) noexcept { return std::int32_t{word} * 488; }
-// Acceleration in whole milli-g: word x 0.488 rounded half away from zero (-15991..15990).
+namespace units_detail {
+// The division of accel_milli_g_rounded (see robowire/core/detail/divide.hpp).
+using milli_g_by_125 = robowire::detail::divider<125, ((32768u * 488u + 500u) >> 3), 2097, 18, 2>;
+}  // namespace units_detail
+// Acceleration in whole milli-g: word x 0.488 rounded half away from zero
+// (-15991..15990). No library division on a core without a divide
+// instruction: (|word| x 488 + 500) / 1000 as / 8, then / 125 by a multiply.
 constexpr std::int16_t accel_milli_g_rounded(std::int16_t word) noexcept {
-    const std::int32_t ug = accel_micro_g(word);
-    return static_cast<std::int16_t>((ug < 0 ? ug - 500 : ug + 500) / 1000);
+    const std::uint32_t mag = word < 0 ? 0u - static_cast<std::uint32_t>(word) : static_cast<std::uint32_t>(word);
+    const std::uint32_t q = units_detail::milli_g_by_125{}((mag * 488u + 500u) >> 3);
+    return static_cast<std::int16_t>(word < 0 ? -static_cast<std::int32_t>(q) : static_cast<std::int32_t>(q));
 }
 constexpr std::uint16_t battery_millivolts(const status& s) noexcept {
     return battery_millivolts(s.battery_voltage_raw);

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstring>
+#include <new>
 #include <optional>
 #include <span>
 #include <type_traits>
@@ -48,18 +49,25 @@ private:
     union slot {  // a union: the unset constructor makes no store
         std::optional<osp::frame> f;
         constexpr slot() noexcept {}  // nothing yet
+        constexpr slot(std::nullopt_t) noexcept : f() {}
         constexpr slot(const std::optional<osp::frame>& x) noexcept : f(x) {}
     };
     slot frame_;
 };
 // Makes d's frame *f, or none for nullptr, whatever it held (also nothing, after decode_result(unset_t)).
 constexpr void impl::set_frame(decode_result& d, const osp::frame* f) noexcept {
-    // a whole-union copy: its member becomes the active one, also in a constant expression
-    d.frame_ = f ? std::optional<osp::frame>(std::in_place, *f) : std::optional<osp::frame>();
+    if (std::is_constant_evaluated()) {  // a whole-union copy makes the member the active one
+        d.frame_ = f ? std::optional<osp::frame>(std::in_place, *f) : std::optional<osp::frame>();
+    } else if (f) {  // in place, a store per byte (a 7-byte union copy calls memcpy at -Os)
+        ::new (static_cast<void*>(&d.frame_.f)) std::optional<osp::frame>(std::in_place, *f);
+    } else {
+        ::new (static_cast<void*>(&d.frame_.f)) std::optional<osp::frame>();
+    }
 }
 // Makes d hold a frame, whatever it held, and returns it, to be written in place.
 constexpr osp::frame& impl::frame_in_place(decode_result& d) noexcept {
-    d.frame_ = std::optional<osp::frame>(std::in_place);
+    if (std::is_constant_evaluated()) d.frame_ = std::optional<osp::frame>(std::in_place);
+    else ::new (static_cast<void*>(&d.frame_.f)) std::optional<osp::frame>(std::in_place);
     return *d.frame_.f;
 }
 

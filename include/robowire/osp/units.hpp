@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <numbers>
 
+#include "../core/detail/divide.hpp"
 #include "messages.hpp"
 
 namespace robowire::osp {
@@ -43,6 +44,11 @@ constexpr result<std::uint16_t> angle_from_radians(double radians, scale s = sca
 }  // namespace arm1
 
 namespace obp1 {
+namespace units_detail {
+// The divisions of the integer forms below (see robowire/core/detail/divide.hpp).
+using millivolts_by_10 = robowire::detail::divider<10, 327689, 6554, 16, 2>;            // (|mv| + 5) / 10
+using sixteenths_by_625 = robowire::detail::divider<625, (55355000 >> 4), 839, 19, 1>;  // (bp x 5535 + 5000) / 16 / 625
+}  // namespace units_detail
 // ---- integer forms (no floating point)
 // Battery voltage in millivolts: raw x 10 (document, -327680..327670) or raw (published firmware).
 constexpr std::int32_t millivolts(std::int16_t raw, scale s = scale::document) noexcept {
@@ -51,11 +57,13 @@ constexpr std::int32_t millivolts(std::int16_t raw, scale s = scale::document) n
 // Current in milliamps: the raw value in both scales (-32768..32767).
 constexpr std::int32_t milliamps(std::int16_t raw, scale = scale::document) noexcept { return raw; }
 // State of charge in basis points (hundredths of a percent, 10000 = 100 %):
-// raw x 10000 / 65535 rounded (document), or raw (published firmware, passed through
-// unchanged even above 10000).
+// raw x 10000 / 65535 rounded to nearest (document), or raw (published firmware,
+// passed through unchanged even above 10000). No division: x / 65535 is
+// (x + (x >> 16)) >> 16, exact for every raw.
 constexpr std::uint16_t soc_basis_points(std::uint16_t raw, scale s = scale::document) noexcept {
     if (s == scale::published_firmware) return raw;
-    return static_cast<std::uint16_t>((std::uint32_t{raw} * 10000u + 32767u) / 65535u);
+    const std::uint32_t x = std::uint32_t{raw} * 10000u + 32767u;  // at most 655382767
+    return static_cast<std::uint16_t>((x + (x >> 16)) >> 16);
 }
 constexpr std::int32_t millivolts(const voltage& m, scale s = scale::document) noexcept {
     return millivolts(m.centivolts, s);
@@ -66,19 +74,29 @@ constexpr std::int32_t milliamps(const current& m, scale s = scale::document) no
 constexpr std::uint16_t soc_basis_points(const soc& m, scale s = scale::document) noexcept {
     return soc_basis_points(m.soc_raw, s);
 }
-// Raw voltage for `mv` millivolts (rounded to 10 mV in the document's scale);
-// value_out_of_range (offset 4) if it does not fit the i16 field.
+// Raw voltage for `mv` millivolts (document: mv / 10 rounded half away from
+// zero; published firmware: mv); value_out_of_range (offset 4) if it does not
+// fit the i16 field (document: mv outside -327684..327674). No library
+// division on a core without a divide instruction.
 constexpr result<std::int16_t> voltage_from_millivolts(std::int32_t mv, scale s = scale::document) noexcept {
-    const std::int32_t raw = s == scale::published_firmware ? mv : (mv < 0 ? mv - 5 : mv + 5) / 10;
-    if (raw < -32768 || raw > 32767) return fail(errc::value_out_of_range, 4);
-    return static_cast<std::int16_t>(raw);
+    if (s == scale::published_firmware) {
+        if (mv < -32768 || mv > 32767) return fail(errc::value_out_of_range, 4);
+        return static_cast<std::int16_t>(mv);
+    }
+    if (mv < -327684 || mv > 327674) return fail(errc::value_out_of_range, 4);
+    const std::uint32_t n = (mv < 0 ? 0u - static_cast<std::uint32_t>(mv) : static_cast<std::uint32_t>(mv)) + 5u;
+    const std::uint32_t q = units_detail::millivolts_by_10{}(n);
+    return static_cast<std::int16_t>(mv < 0 ? -static_cast<std::int32_t>(q) : static_cast<std::int32_t>(q));
 }
-// Raw SOC for `bp` basis points (0..10000, rounded in the document's scale);
-// value_out_of_range (offset 4) above 10000.
+// Raw SOC for `bp` basis points (0..10000; document: bp x 65535 / 10000
+// rounded half up, published firmware: bp); value_out_of_range (offset 4)
+// above 10000. No library division on a core without a divide instruction.
 constexpr result<std::uint16_t> soc_from_basis_points(std::uint16_t bp, scale s = scale::document) noexcept {
     if (bp > 10000) return fail(errc::value_out_of_range, 4);
     if (s == scale::published_firmware) return bp;
-    return static_cast<std::uint16_t>((std::uint32_t{bp} * 65535u + 5000u) / 10000u);
+    // bp x 65535 + 5000 = bp x 60000 + (bp x 5535 + 5000), and floor(w / 10000) = floor(floor(w / 16) / 625)
+    const std::uint32_t w = std::uint32_t{bp} * 5535u + 5000u;  // at most 55355000
+    return static_cast<std::uint16_t>(std::uint32_t{bp} * 6u + units_detail::sixteenths_by_625{}(w >> 4));
 }
 
 // ---- double forms
