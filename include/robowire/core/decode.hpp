@@ -42,12 +42,18 @@ ROBOWIRE_ALWAYS_INLINE constexpr error check_fixed(std::span<const std::uint8_t>
 // M's fields from `in`, without the fixed-byte and length checks: for
 // dispatchers that have checked both already (`in` holds at least
 // max_size_v<M> bytes). Returns the first field error, or errc::ok.
-// On an error, nothing is written to `out`.
+// On an error, nothing is written to `out` (under ROBOWIRE_OPTIMIZE_SIZE, in
+// one pass with less code, the fields before the error may be: for an
+// output that is discarded on an error, such as a dispatcher's result).
 template <described M>
 ROBOWIRE_ALWAYS_INLINE constexpr error decode_fields(M& out, std::span<const std::uint8_t> in) noexcept {
     error err{};
     const auto known = in.first(table_v<M>.max_size());
     constexpr auto fields = std::make_index_sequence<detail::field_count_v<M>>{};
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
+        (void)detail::decode_record<M>(out, known, 0, err, fields);
+        return err;
+    }
     if (!detail::check_record<M>(known, 0, err, fields)) return err;
     detail::prechecked none{};
     (void)detail::decode_record<M>(out, known, 0, none, fields);
@@ -76,12 +82,20 @@ inline constexpr bool message_via_local = false, alternative_via_local = true;
 #endif
 // The fields of M, from an input whose fixed bytes and length are checked.
 // Every field is checked before the first is written: on an error, `out` is
-// left as it was.
-template <class M>
+// left as it was. Under ROBOWIRE_OPTIMIZE_SIZE that takes two passes over the
+// fields (more code), so an output nobody sees on an error (Keep false: a
+// result being built) is checked as it is written, in one pass.
+template <class M, bool Keep = false>
 ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, std::span<const std::uint8_t> in) noexcept {
     constexpr std::size_t extent = table_v<M>.max_size();
     constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
     error err{};
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE && !Keep) {
+        const auto known = in.size() > extent ? in.first(extent) : in;
+        if (!decode_record<M>(out, known, 0, err, fields)) return err;
+        if constexpr (reports_trailing<M>) out.ignored_trailing_bytes = in.size() - known.size();
+        return err;
+    }
     if (!check_record<M>(in, 0, err, fields)) return err;  // reads the first `extent` bytes only
     prechecked none{};
     (void)decode_record<M>(out, in.size() > extent ? in.first(extent) : in, 0, none, fields);
@@ -173,7 +187,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool fixed_match(std::span<const std::uint8_t> 
 template <std::size_t Known, class M, class R>
 ROBOWIRE_ALWAYS_INLINE constexpr bool input_ok(R& r, std::span<const std::uint8_t> in) noexcept {
     constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input();
-    if constexpr (fixed_within_min_v<Known, M>) {
+    if constexpr (fixed_within_min_v<Known, M> && !ROBOWIRE_OPTIMIZE_SIZE) {  // size: no cold function per message
         if (in.size() - min <= max - min && fixed_match<Known, M>(in, std::make_index_sequence<fixed_count_v<M>>{}))
             [[likely]]
             return true;
@@ -193,7 +207,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool input_ok(R& r, std::span<const std::uint8_
     }
 }
 // decode_into without the check of the fixed byte at offset Known.
-template <std::size_t Known, class M>
+template <std::size_t Known, class M, bool Keep = true>
 ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const std::uint8_t> in) noexcept {
     if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // no call, each error returned as found: smaller code
         constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input();
@@ -205,11 +219,12 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const st
     } else if (error e{}; !input_ok<Known, M>(e, in)) {
         return e;
     }
-    return decode_body(out, in);
+    return decode_body<M, Keep>(out, in);
 }
 // decode_into's work, out of line: the input as pointer and size (a span that an
-// inlined caller passes on by value is copied through the stack first).
-template <class M>
+// inlined caller passes on by value is copied through the stack first). Keep:
+// `out` is left as it was on an error (decode_into; decode() builds a result).
+template <class M, bool Keep = true>
 constexpr error decode_raw(M& out, const std::uint8_t* data, std::size_t size) noexcept {
     if constexpr (message_via_local && !ROBOWIRE_OPTIMIZE_SIZE && decode_writes_every_member_v<M>) {
         M local{};
@@ -217,7 +232,7 @@ constexpr error decode_raw(M& out, const std::uint8_t* data, std::size_t size) n
         if (e.code == errc::ok) out = local;
         return e;
     } else {
-        return decode_checked<no_offset>(out, std::span<const std::uint8_t>(data, size));
+        return decode_checked<no_offset, M, Keep>(out, std::span<const std::uint8_t>(data, size));
     }
 }
 }  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE
@@ -243,7 +258,9 @@ template <described M>
     // Size: decode_into's code.
     result<M> r = ROBOWIRE_OPTIMIZE_SIZE ? detail::in_place_result<M>() : result<M>(codec::unset_t{});
     if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
-        if (const error e = decode_into(codec::unchecked_value(r), in); e.code != errc::ok) r = e;
+        if (const error e = detail::decode_raw<M, false>(codec::unchecked_value(r), in.data(), in.size());
+            e.code != errc::ok)
+            r = e;
         return r;
     } else {
         if (!detail::input_ok<detail::no_offset, M>(r, in)) return r;
