@@ -81,16 +81,16 @@ inline constexpr bool message_via_local = !ROBOWIRE_COPY_RUNS, alternative_via_l
 inline constexpr bool message_via_local = false, alternative_via_local = true;
 #endif
 // The fields of M, from an input whose fixed bytes and length are checked.
-// Every field is checked before the first is written: on an error, `out` is
-// left as it was. Under ROBOWIRE_OPTIMIZE_SIZE that takes two passes over the
-// fields (more code), so an output nobody sees on an error (Keep false: a
-// result being built) is checked as it is written, in one pass.
-template <class M, bool Keep = false>
+// OnePass false: every field is checked before the first is written, so on
+// an error `out` is left as it was, and runs of fields are copied at once.
+// OnePass true: each field checked as it is written (less code), for an
+// output that is discarded on an error (a local, a result being built).
+template <class M, bool OnePass = false>
 ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, std::span<const std::uint8_t> in) noexcept {
     constexpr std::size_t extent = table_v<M>.max_size();
     constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
     error err{};
-    if constexpr (ROBOWIRE_OPTIMIZE_SIZE && !Keep) {
+    if constexpr (OnePass) {
         const auto known = in.size() > extent ? in.first(extent) : in;
         if (!decode_record<M>(out, known, 0, err, fields)) return err;
         if constexpr (reports_trailing<M>) out.ignored_trailing_bytes = in.size() - known.size();
@@ -219,7 +219,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const st
     } else if (error e{}; !input_ok<Known, M>(e, in)) {
         return e;
     }
-    return decode_body<M, Keep>(out, in);
+    return decode_body < M, ROBOWIRE_OPTIMIZE_SIZE && !Keep > (out, in);
 }
 // decode_into's work, out of line: the input as pointer and size (a span that an
 // inlined caller passes on by value is copied through the stack first). Keep:

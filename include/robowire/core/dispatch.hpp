@@ -141,14 +141,17 @@ constexpr std::size_t index_of_key(std::uint8_t key) noexcept {
 template <std::size_t I, std::size_t KeyOffset, bool Checked, class Variant>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r,
                                                          std::span<const std::uint8_t> in) noexcept {
+    using A = std::variant_alternative_t<I, Variant>;
     if constexpr (!Checked)
-        if (!input_ok<KeyOffset, std::variant_alternative_t<I, Variant>>(r, in)) return;
-    if constexpr (alternative_via_local && !ROBOWIRE_OPTIMIZE_SIZE &&
-                  flat_record_v<std::variant_alternative_t<I, Variant>>) {
-        std::variant_alternative_t<I, Variant> local{};
-        if (const error e = decode_body(local, in); e.code != errc::ok) r = e;
+        if (!input_ok<KeyOffset, A>(r, in)) return;
+    // The result is discarded on an error: one pass where two cost more
+    // (less code; text walked once); else checked first, runs copied at once.
+    constexpr bool one_pass = ROBOWIRE_OPTIMIZE_SIZE || has_text_or_tail<A>();
+    if constexpr (alternative_via_local && !ROBOWIRE_OPTIMIZE_SIZE && flat_record_v<A>) {
+        A local{};
+        if (const error e = decode_body<A, true>(local, in); e.code != errc::ok) r = e;
         else codec::make_alternative<I>(r) = local;
-    } else if (const error e = decode_body(codec::make_alternative<I>(r), in); e.code != errc::ok) {
+    } else if (const error e = decode_body<A, one_pass>(codec::make_alternative<I>(r), in); e.code != errc::ok) {
         r = e;
     }
 }

@@ -146,6 +146,20 @@ constexpr bool flat_record() noexcept {
 }
 template <class M>
 inline constexpr bool flat_record_v = flat_record<M>();
+// M has a text or tail field (directly or in a record): a decode that checks
+// before it writes walks those bytes twice.
+template <class M>
+constexpr bool has_text_or_tail() noexcept {
+    return []<std::size_t... I>(std::index_sequence<I...>) {
+        return ([] {
+            using F = field_t<M, I>;
+            if constexpr (F::kind == wire_kind::text || F::kind == wire_kind::tail) return true;
+            else if constexpr (F::kind == wire_kind::record) return has_text_or_tail<typename F::element_type>();
+            else return false;
+        }() || ...);
+    }
+    (std::make_index_sequence<field_count_v<M>>{});
+}
 
 // ---- runs (ROBOWIRE_COPY_RUNS, at run time; decode and encode): fields
 // whose wire bytes are their members' bytes, next to each other on the wire
