@@ -215,6 +215,7 @@ struct careful_scanner {
     state_machine sm;
     template <class F>
     void feed(const std::uint8_t* p, std::size_t n, F&& on_frame) {
+        if (n == 1) return sm.push(p[0], on_frame);
         if (n < 64) {
             for (std::size_t k = 0; k < n; ++k) sm.push(p[k], on_frame);
             return;

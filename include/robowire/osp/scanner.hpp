@@ -84,8 +84,7 @@ public:
 private:
     // A chunk of 10 bytes or more: memchr finds the start byte, frames are
     // checked and reported in place, and where start bytes are dense,
-    // scan_words takes 8 positions at a time. Out of line, so that a call
-    // with one byte does not pay for its registers.
+    // scan_words takes 8 positions at a time.
     template <class OnFrame>
     constexpr void feed_chunk(const std::uint8_t* p, std::size_t n, OnFrame& on_frame) {
         std::size_t i = len_ != 0 ? finish_held(p, on_frame) : 0;  // the next position to look at
@@ -107,10 +106,9 @@ private:
             }
             ++false_starts_;
             at = find_start(p, ++i, n);
-            if (words_ok && at - i < dense_gap) {  // start bytes close together
-                skipped_ += at - mark;
-                i = mark = scan_words(p, at, n, on_frame);
-                at = find_start(p, i, n);
+            if (words_ok && at - i < dense_gap && at < last) {  // start bytes close together
+                i = scan_words(p, at, n);
+                at = i < last && p[i] == start1 ? i : find_start(p, i, n);
             }
         }
         // The last 9 positions: their windows end past the chunk. Keep the
@@ -169,49 +167,28 @@ private:
     static constexpr bool rest_of_frame(const std::uint8_t* w) noexcept {  // after a start byte
         return w[1] == start2 && w[8] == end1 && w[9] == end2;
     }
-    // Reports the frame at p + at; the bytes from mark up to it were skipped.
-    template <class OnFrame>
-    constexpr void report(const std::uint8_t* p, std::size_t at, std::size_t& mark, OnFrame& on_frame) {
-        skipped_ += at - mark;
-        ++frames_;
-        mark = at + frame_size;
-        on_frame(frame_bytes(p + at, frame_size));
-    }
-
     // Eight positions at a time (where start bytes are dense, as in long
     // runs of FF or FF AA): from i, while the next 8 positions hold a start
-    // byte, reports the first frame among them or counts their start bytes
-    // as false starts. Returns the position to go on from; the bytes from i
-    // up to it that are in no frame are counted as skipped.
+    // byte and no frame, counts their start bytes as false starts. Returns
+    // the first frame's position, or the position to search on from.
     static constexpr bool words_ok = std::endian::native == std::endian::little || std::endian::native == std::endian::big;
-    template <class OnFrame>
-    ROBOWIRE_NOINLINE constexpr std::size_t scan_words(const std::uint8_t* p, std::size_t i, std::size_t n,
-                                                       OnFrame& on_frame) {
-        std::size_t mark = i;
+    ROBOWIRE_NOINLINE constexpr std::size_t scan_words(const std::uint8_t* p, std::size_t i, std::size_t n) noexcept {
         constexpr word_t low7 = lanes(0x7F), high = lanes(0x80);
-        while (i + word + frame_size - 1 <= n) {  // the windows of the 8 positions lie in the chunk
+        for (; i + word + frame_size - 1 <= n; i += word) {  // the windows of the 8 positions lie in the chunk
             const word_t w0 = load(p + i);
             const word_t ff = ((w0 & low7) + lanes(0x01)) & w0 & high;  // lanes holding FF
-            if (ff == 0) {
-                i += word;
-                break;
-            }
+            if (ff == 0) return i + word;
             // a lane of z is 0 where ST2, EN1 and EN2 follow
             const word_t z = (load(p + i + 1) ^ lanes(start2)) | (load(p + i + 8) ^ lanes(end1)) |
                              (load(p + i + 9) ^ lanes(end2));
             const word_t hit = ff & ~(((z & low7) + low7) | z);  // lanes where a frame starts
-            if (hit == 0) {
-                false_starts_ += count(ff);
-                i += word;
-                continue;
+            if (hit != 0) {
+                const std::size_t k = first_lane(hit);
+                false_starts_ += count(ff & before(k));
+                return i + k;
             }
-            const std::size_t k = first_lane(hit);
-            false_starts_ += count(ff & before(k));
-            report(p, i + k, mark, on_frame);
-            i += k + frame_size;
-            if (k == 0) return i;  // frames back to back: the caller checks them one by one
+            false_starts_ += count(ff);
         }
-        skipped_ += i - mark;
         return i;
     }
     // 8 bytes in host order (lane k: the byte at p + k).
