@@ -101,13 +101,15 @@ private:
                     i += frame_size;
                 } while (i < last && p[i] == start1 && rest_of_frame(p + i));
                 mark = i;
-                at = i < last ? find_start(p, i, n) : i;  // the last 9 positions: looked at one by one below
+                // the last 9 positions are looked at one by one below
+                at = i < last ? (p[i] == start1 ? i : find_start(p, i, n)) : i;
                 continue;
             }
             ++false_starts_;
             at = find_start(p, ++i, n);
-            if (words_ok && at - i < dense_gap && at < last) {  // start bytes close together
-                i = scan_words(p, at, n);
+            if (words_ok && at - i < dense_gap && at < last) {  // start bytes close together: 8 positions a step
+                skipped_ += at - mark;
+                i = mark = scan_words(p, at, n, on_frame);
                 at = i < last && p[i] == start1 ? i : find_start(p, i, n);
             }
         }
@@ -127,7 +129,7 @@ private:
     }
 
     static constexpr std::size_t word = 8;  // positions per step of scan_words
-    static constexpr std::size_t dense_gap = 8;  // a start byte this close after a false start: scan_words
+    static constexpr std::size_t dense_gap = 16;  // a start byte this close after a false start: scan_words
     using word_t = std::uint64_t;
     static constexpr word_t lanes(std::uint8_t b) noexcept { return word_t{b} * 0x0101010101010101u; }
 
@@ -169,26 +171,49 @@ private:
     }
     // Eight positions at a time (where start bytes are dense, as in long
     // runs of FF or FF AA): from i, while the next 8 positions hold a start
-    // byte and no frame, counts their start bytes as false starts. Returns
-    // the first frame's position, or the position to search on from.
+    // byte, reports the first frame among them or counts their start bytes
+    // as false starts; the second of two frames back to back returns (the
+    // caller checks such frames one by one, more cheaply). Returns the
+    // position to go on from; the bytes from i up to it in no frame are
+    // counted as skipped.
     static constexpr bool words_ok = std::endian::native == std::endian::little || std::endian::native == std::endian::big;
-    ROBOWIRE_NOINLINE constexpr std::size_t scan_words(const std::uint8_t* p, std::size_t i, std::size_t n) noexcept {
+    template <class OnFrame>
+    ROBOWIRE_NOINLINE constexpr std::size_t scan_words(const std::uint8_t* p, std::size_t i, std::size_t n,
+                                                       OnFrame& on_frame) {
         constexpr word_t low7 = lanes(0x7F), high = lanes(0x80);
-        for (; i + word + frame_size - 1 <= n; i += word) {  // the windows of the 8 positions lie in the chunk
+        std::size_t mark = i;
+        bool reported = false, empty = false;
+        while (i + word + frame_size - 1 <= n) {  // the windows of the 8 positions lie in the chunk
             const word_t w0 = load(p + i);
             const word_t ff = ((w0 & low7) + lanes(0x01)) & w0 & high;  // lanes holding FF
-            if (ff == 0) return i + word;
+            if (ff == 0) {  // 16 positions without a start byte end the step
+                i += word;
+                if (empty) break;
+                empty = true;
+                continue;
+            }
+            empty = false;
             // a lane of z is 0 where ST2, EN1 and EN2 follow
             const word_t z = (load(p + i + 1) ^ lanes(start2)) | (load(p + i + 8) ^ lanes(end1)) |
                              (load(p + i + 9) ^ lanes(end2));
             const word_t hit = ff & ~(((z & low7) + low7) | z);  // lanes where a frame starts
-            if (hit != 0) {
-                const std::size_t k = first_lane(hit);
-                false_starts_ += count(ff & before(k));
-                return i + k;
+            if (hit == 0) {
+                false_starts_ += count(ff);
+                i += word;
+                continue;
             }
-            false_starts_ += count(ff);
+            const std::size_t k = first_lane(hit);
+            if (k == 0 && reported && i == mark) break;  // frames back to back: the caller's loop takes them
+            false_starts_ += count(ff & before(k));
+            i += k;
+            skipped_ += i - mark;
+            ++frames_;
+            on_frame(frame_bytes(p + i, frame_size));
+            i += frame_size;
+            mark = i;
+            reported = true;
         }
+        skipped_ += i - mark;
         return i;
     }
     // 8 bytes in host order (lane k: the byte at p + k).
