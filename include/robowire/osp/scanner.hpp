@@ -128,7 +128,7 @@ private:
         skipped_ += i - mark;
     }
 
-    static constexpr std::size_t word = 8;  // positions per step of scan_words
+    static constexpr std::size_t word = 8;        // positions per step of scan_words
     static constexpr std::size_t dense_gap = 16;  // a start byte this close after a false start: scan_words
     using word_t = std::uint64_t;
     static constexpr word_t lanes(std::uint8_t b) noexcept { return word_t{b} * 0x0101010101010101u; }
@@ -170,13 +170,13 @@ private:
         return w[1] == start2 && w[8] == end1 && w[9] == end2;
     }
     // Eight positions at a time (where start bytes are dense, as in long
-    // runs of FF or FF AA): from i, while the next 8 positions hold a start
-    // byte, reports the first frame among them or counts their start bytes
-    // as false starts; the second of two frames back to back returns (the
-    // caller checks such frames one by one, more cheaply). Returns the
-    // position to go on from; the bytes from i up to it in no frame are
-    // counted as skipped.
-    static constexpr bool words_ok = std::endian::native == std::endian::little || std::endian::native == std::endian::big;
+    // runs of FF or FF AA): from i, reports the frames and counts the other
+    // start bytes as false starts, until 16 positions in a row hold no start
+    // byte or a frame follows the last one directly (the caller checks such
+    // frames one by one, more cheaply). Returns the position to go on from;
+    // the bytes from i up to it in no frame are counted as skipped.
+    static constexpr bool words_ok =
+        std::endian::native == std::endian::little || std::endian::native == std::endian::big;
     template <class OnFrame>
     ROBOWIRE_NOINLINE constexpr std::size_t scan_words(const std::uint8_t* p, std::size_t i, std::size_t n,
                                                        OnFrame& on_frame) {
@@ -194,8 +194,8 @@ private:
             }
             empty = false;
             // a lane of z is 0 where ST2, EN1 and EN2 follow
-            const word_t z = (load(p + i + 1) ^ lanes(start2)) | (load(p + i + 8) ^ lanes(end1)) |
-                             (load(p + i + 9) ^ lanes(end2));
+            const word_t z =
+                (load(p + i + 1) ^ lanes(start2)) | (load(p + i + 8) ^ lanes(end1)) | (load(p + i + 9) ^ lanes(end2));
             const word_t hit = ff & ~(((z & low7) + low7) | z);  // lanes where a frame starts
             if (hit == 0) {
                 false_starts_ += count(ff);
@@ -230,7 +230,8 @@ private:
     // Lanes are marked by their high bit.
     static constexpr std::size_t first_lane(word_t m) noexcept {
         return static_cast<std::size_t>(std::endian::native == std::endian::little ? std::countr_zero(m)
-                                                                                   : std::countl_zero(m)) / 8;
+                                                                                   : std::countl_zero(m)) /
+               8;
     }
     static constexpr word_t before(std::size_t k) noexcept {  // the lanes before lane k
         return std::endian::native == std::endian::little ? (word_t{1} << (8 * k)) - 1 : ~(~word_t{0} >> (8 * k));
