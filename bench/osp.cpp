@@ -1,9 +1,11 @@
 // OSP: per-message decode and dispatch; scanner throughput on clean streams,
-// 30 % noise and pure noise, fed in 1-byte, 64-byte and 4 KiB chunks.
+// 30 % noise, pure noise and three hard streams (all FF, FF AA repeated,
+// frames with one bad marker), fed in 1-byte, 64-byte and 4 KiB chunks.
 // Baselines: hand-written decoders (the same checks in robowire's order, the
-// same error report: bench::hw, an error code and its byte offset); a
-// byte-at-a-time state machine of the
-// usual kind (as MAVLink-style parsers work); memchr for start bytes (floor).
+// same error report: bench::hw, an error code and its byte offset); for the
+// scanner a careful hand-written one (memchr for the start byte in chunks of
+// 64 and more, a byte-at-a-time state machine otherwise), that state machine
+// alone (as MAVLink-style parsers work), and memchr for start bytes (floor).
 #include <robowire/osp.hpp>
 
 #include <bit>
@@ -212,13 +214,24 @@ void dispatch_handwritten(benchmark::State& state) {
 
 // ---- streams (64 KiB)
 constexpr std::size_t stream_size = 64 * 1024;
-enum class kind { clean, noisy, noise };
+enum class kind { clean, noisy, noise, all_ff, ff_aa, near_miss };
 bench::vector<std::uint8_t> stream(kind k) {
     bench::rng r;
     const auto fs = frames();
     bench::vector<std::uint8_t> s;
     s.reserve(stream_size + 16);
     std::size_t i = 0;
+    if (k == kind::all_ff) s.assign(stream_size, 0xFF);
+    if (k == kind::ff_aa)
+        for (std::size_t j = 0; j < stream_size; ++j) s.push_back(j % 2 ? 0xAA : 0xFF);
+    if (k == kind::near_miss)  // frames, each with one bad marker: AA, 55 or 77 in turn
+        while (s.size() < stream_size) {
+            auto f = fs[i % fs.size()];
+            const std::size_t at = i % 3 == 0 ? 1 : i % 3 == 1 ? 8 : 9;
+            f[at] = static_cast<std::uint8_t>(f[at] ^ 1);
+            ++i;
+            s.insert(s.end(), f.begin(), f.end());
+        }
     while (s.size() < stream_size) {
         if (k == kind::noise || (k == kind::noisy && r.next() % 100 < 30 * 10 / 17)) {
             // noise bytes: 30 % of the stream overall (runs of 3 bytes, weighted for that share)
@@ -291,6 +304,64 @@ struct state_machine {
         } while ((n >= 2 && buf[1] != 0xAA) || (n >= 9 && buf[8] != 0x55));
     }
 };
+// The careful hand-written scanner, with the same semantics: in chunks of 64
+// bytes and more, memchr finds the start byte and a frame is checked and
+// reported in place; the state machine takes short chunks, the bytes that
+// decide a candidate held from the last chunk (at most 9), and the chunk's
+// last 9 bytes (whose frames would end past it).
+struct careful_scanner {
+    state_machine sm;
+    template <class F>
+    void feed(const std::uint8_t* p, std::size_t n, F&& on_frame) {
+        if (n == 1) return sm.push(p[0], on_frame);
+        if (n < 64) {
+            for (std::size_t k = 0; k < n; ++k) sm.push(p[k], on_frame);
+            return;
+        }
+        std::size_t i = 0;
+        if (sm.n != 0) {  // every candidate that starts in the held bytes ends within the next 9
+            for (; i < 9; ++i) sm.push(p[i], on_frame);
+            i -= sm.n;  // a candidate still held starts in this chunk: scan it in place
+            sm.n = 0;
+        }
+        const std::size_t last = n - 9;  // a window from here on ends past the chunk
+        while (i < last) {
+            const auto* h = static_cast<const std::uint8_t*>(std::memchr(p + i, 0xFF, last - i));
+            if (!h) {
+                sm.skipped += last - i;
+                i = last;
+                break;
+            }
+            const auto at = static_cast<std::size_t>(h - p);
+            sm.skipped += at - i;
+            i = at;
+            if (p[i + 1] == 0xAA && p[i + 8] == 0x55 && p[i + 9] == 0x77) {
+                ++sm.frames;
+                on_frame(p + i);
+                i += 10;
+            } else {
+                ++sm.false_starts;
+                ++sm.skipped;
+                ++i;
+            }
+        }
+        for (; i < n; ++i) sm.push(p[i], on_frame);
+    }
+};
+void scan_careful(benchmark::State& state, kind k) {
+    const auto s = stream(k);
+    const auto chunk = static_cast<std::size_t>(state.range(0));
+    std::uint64_t found = 0, frames_seen = 0;
+    for (auto _ : bench::measure(state)) {
+        careful_scanner sc;
+        for (std::size_t i = 0; i < s.size(); i += chunk)
+            sc.feed(s.data() + i, std::min(chunk, s.size() - i), [&](const std::uint8_t* f) { found += f[3]; });
+        benchmark::DoNotOptimize(found);
+        frames_seen = sc.sm.frames;
+    }
+    state.counters["frames"] = static_cast<double>(frames_seen);
+    state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(s.size()));
+}
 void scan_state_machine(benchmark::State& state, kind k) {
     const auto s = stream(k);
     const auto chunk = static_cast<std::size_t>(state.range(0));
@@ -338,8 +409,12 @@ BENCHMARK(dispatch_robowire)->Name("osp.decode_dispatch:robowire")->Apply(bench:
 BENCHMARK(dispatch_handwritten)->Name("osp.decode_dispatch:handwritten")->Apply(bench::rounds<1>);
 #define ROBOWIRE_SCAN(K)                                                                                    \
     BENCHMARK_CAPTURE(scan_robowire, K, kind::K)->Name("osp.scan_" #K ":robowire")->Arg(1)->Arg(64)->Arg(4096)->Apply(bench::rounds<1>); \
+    BENCHMARK_CAPTURE(scan_careful, K, kind::K)->Name("osp.scan_" #K ":handwritten")->Arg(1)->Arg(64)->Arg(4096)->Apply(bench::rounds<1>); \
     BENCHMARK_CAPTURE(scan_state_machine, K, kind::K)->Name("osp.scan_" #K ":bytewise")->Arg(1)->Arg(64)->Arg(4096)->Apply(bench::rounds<1>); \
     BENCHMARK_CAPTURE(scan_memchr, K, kind::K)->Name("osp.scan_" #K ":memchr")->Arg(1)->Arg(64)->Arg(4096)->Apply(bench::rounds<1>);
 ROBOWIRE_SCAN(clean)
 ROBOWIRE_SCAN(noisy)
 ROBOWIRE_SCAN(noise)
+ROBOWIRE_SCAN(all_ff)
+ROBOWIRE_SCAN(ff_aa)
+ROBOWIRE_SCAN(near_miss)

@@ -1,6 +1,7 @@
 // OSP stream scanner: chunk sizes come from the input; the frames found must
 // be exactly those of a simple reference (leftmost window with the markers,
-// consumed whole), whatever the chunking.
+// consumed whole), whatever the chunking, and the counters those of the same
+// stream pushed one byte at a time.
 #include <robowire/osp.hpp>
 
 #include <vector>
@@ -27,7 +28,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::size_t found = 0;
     std::size_t pos = 0, k = 0;
     while (pos < stream.size()) {
-        const std::size_t chunk = 1 + (chunk_seed * (k + 7) + k) % 23;  // 1..23, varying
+        // 1..23, or (first byte 128 and up) 10..265, varying
+        const std::size_t chunk = chunk_seed < 128 ? 1 + (chunk_seed * (k + 7) + k) % 23
+                                                   : 10 + (chunk_seed * (k + 7) + k) % 256;
         const std::size_t n = std::min(chunk, stream.size() - pos);
         sc.feed(stream.subspan(pos, n), [&](osp::scanner::frame_bytes f) {
             FUZZ_CHECK(f[0] == 0xFF && f[1] == 0xAA && f[8] == 0x55 && f[9] == 0x77);
@@ -42,5 +45,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FUZZ_CHECK(sc.frames() == found);
     FUZZ_CHECK(found <= stream.size() / 10);
     FUZZ_CHECK(sc.skipped() + 10 * found + sc.pending() == stream.size());
+    osp::scanner bytewise;
+    for (std::uint8_t b : stream) (void)bytewise.push(b);
+    FUZZ_CHECK(bytewise.frames() == found && bytewise.skipped() == sc.skipped() &&
+               bytewise.false_starts() == sc.false_starts() && bytewise.pending() == sc.pending());
     return 0;
 }

@@ -1,5 +1,7 @@
 // robowire and the hand-written baselines of bench/osp.cpp, run on the same inputs:
-// the same outcome, error code and offset, and output (bench/verify/run).
+// the same outcome, error code and offset, and output (bench/verify/run). The
+// scanners: the same frames, byte-exact and in order, and the same counters
+// after every chunk, on the bench streams and on random ones, in many chunkings.
 #include "../osp.cpp"
 #include "check.hpp"
 
@@ -69,7 +71,78 @@ static void sweep(const std::vector<frame10>& ins, F check) {
                 }
     }
 }
+using frame_list = std::vector<frame10>;
+static frame10 to_frame(const std::uint8_t* f) {
+    frame10 a{};
+    std::memcpy(a.data(), f, 10);
+    return a;
+}
+// `s` fed in chunks of `chunk` bytes (the last may be shorter) to robowire's
+// scanner, the careful scanner and the state machine, which also takes it
+// byte by byte.
+static void check_scan(const std::uint8_t* s, std::size_t size, std::size_t chunk, const std::string& ctx) {
+    osp::scanner rw;
+    careful_scanner hand;
+    state_machine sm;
+    frame_list f_rw, f_hand, f_sm;
+    bool ok = true;
+    for (std::size_t i = 0; i < size && ok; i += chunk) {
+        const std::size_t n = std::min(chunk, size - i);
+        rw.feed(std::span(s + i, n), [&](osp::scanner::frame_bytes f) { f_rw.push_back(to_frame(f.data())); });
+        hand.feed(s + i, n, [&](const std::uint8_t* f) { f_hand.push_back(to_frame(f)); });
+        for (std::size_t k = i; k < i + n; ++k) sm.push(s[k], [&](const std::uint8_t* f) { f_sm.push_back(to_frame(f)); });
+        ok = f_rw == f_sm && f_hand == f_sm && rw.frames() == sm.frames && hand.sm.frames == sm.frames &&
+             rw.skipped() == sm.skipped && hand.sm.skipped == sm.skipped && rw.false_starts() == sm.false_starts &&
+             hand.sm.false_starts == sm.false_starts && rw.pending() == sm.n && hand.sm.n == sm.n;
+        if (!ok)
+            std::printf("MISMATCH osp scanner %s chunk=%zu after %zu bytes: frames %zu/%zu/%zu skipped %llu/%llu/%llu "
+                        "false starts %llu/%llu/%llu pending %zu/%zu/%zu (robowire/careful/bytewise)\n",
+                        ctx.c_str(), chunk, i + n, f_rw.size(), f_hand.size(), f_sm.size(),
+                        static_cast<unsigned long long>(rw.skipped()), static_cast<unsigned long long>(hand.sm.skipped),
+                        static_cast<unsigned long long>(sm.skipped), static_cast<unsigned long long>(rw.false_starts()),
+                        static_cast<unsigned long long>(hand.sm.false_starts),
+                        static_cast<unsigned long long>(sm.false_starts), rw.pending(), hand.sm.n, sm.n);
+    }
+    ++g_counts["osp scanner"];
+    if (!ok) mismatch("osp scanner", ctx);
+}
+static const std::size_t chunks[] = {1, 2, 3, 7, 9, 10, 11, 16, 17, 18, 25, 63, 64, 65, 100, 4096, 1 << 16};
 int main() {
+    // the bench streams, and their first bytes cut at every length up to 100
+    for (kind k : {kind::clean, kind::noisy, kind::noise, kind::all_ff, kind::ff_aa, kind::near_miss}) {
+        const auto s = stream(k);
+        const std::string name = "stream " + std::to_string(static_cast<int>(k));
+        for (std::size_t c : chunks) check_scan(s.data(), s.size(), c, name);
+        for (std::size_t n = 0; n <= 100; ++n)
+            for (std::size_t c : chunks) check_scan(s.data(), n, c, name + " n=" + std::to_string(n));
+    }
+    // random streams: frames (some cut short, some with FF AA in their
+    // parameters) and noise rich in FF, AA, 55 and 77; runs of one pattern
+    bench::rng r;
+    for (int seed = 0; seed < 3000; ++seed) {
+        std::vector<std::uint8_t> s;
+        const std::size_t size = 20 + r.next() % 600;
+        while (s.size() < size) {
+            const auto pick = r.next() % 8;
+            if (pick < 2) {
+                frame10 f{0xFF, 0xAA, r.byte(), r.byte(), r.byte(), r.byte(), r.byte(), r.byte(), 0x55, 0x77};
+                if (r.next() % 4 == 0) { f[4] = 0xFF; f[5] = 0xAA; }
+                if (r.next() % 4 == 0) f[1 + r.next() % 9] ^= static_cast<std::uint8_t>(1 + r.next() % 255);
+                s.insert(s.end(), f.begin(), f.begin() + (r.next() % 4 ? 10 : static_cast<int>(r.next() % 10)));
+            } else if (pick < 6) {
+                static constexpr std::uint8_t tricky[] = {0xFF, 0xAA, 0x55, 0x77, 0x00};
+                s.push_back(r.next() % 2 ? tricky[r.next() % 5] : r.byte());
+            } else {
+                static constexpr std::uint8_t runs[] = {0xFF, 0xAA, 0xFF, 0xAA, 0x55, 0x77};  // FF; FF AA; FF AA 55 77
+                const std::size_t period = 1 + r.next() % 4, len = r.next() % 40;
+                for (std::size_t k = 0; k < len; ++k) s.push_back(period == 3 ? runs[2 + k % 4] : runs[k % period]);
+            }
+        }
+        for (std::size_t c : chunks)
+            if (c <= 2 * s.size()) check_scan(s.data(), s.size(), c, "random " + std::to_string(seed));
+        check_scan(s.data(), s.size(), 1 + r.next() % 80, "random " + std::to_string(seed));
+    }
+
     const auto v = voltage_frames();
     sweep(std::vector<frame10>(v.begin(), v.end()), check_voltage);
     const auto f = frames();

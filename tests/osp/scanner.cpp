@@ -226,3 +226,132 @@ TEST_CASE("scanner: push() one byte at a time, reset()", "[osp][scanner]") {
     CHECK(sc.pending() == 0);
     CHECK(sc.frames() == 0);
 }
+
+namespace {
+// The stream's frames by the reference, and for each the stream offset where
+// it ends; the counters a scanner must show after the whole stream: pending
+// (the first candidate after the last frame that can still become one),
+// skipped (the rest), false starts (the start bytes among the skipped bytes).
+struct expected {
+    std::vector<frame10> frames;
+    std::vector<std::size_t> ends;
+    std::uint64_t skipped = 0, false_starts = 0;
+    std::size_t pending = 0;
+};
+expected expect(const std::vector<std::uint8_t>& s) {
+    expected e;
+    std::size_t i = 0, head = s.size();
+    std::vector<bool> in_frame(s.size());
+    while (i < s.size()) {
+        const std::size_t m = s.size() - i;
+        if (s[i] == 0xFF && m >= 10 && s[i + 1] == 0xAA && s[i + 8] == 0x55 && s[i + 9] == 0x77) {
+            frame10 f{};
+            for (std::size_t k = 0; k < 10; ++k) { f[k] = s[i + k]; in_frame[i + k] = true; }
+            e.frames.push_back(f);
+            e.ends.push_back(i + 10);
+            i += 10;
+            continue;
+        }
+        if (s[i] == 0xFF && m < 10 && (m < 2 || s[i + 1] == 0xAA) && (m < 9 || s[i + 8] == 0x55)) {
+            head = i;
+            break;
+        }
+        ++i;
+    }
+    e.pending = s.size() - head;
+    for (std::size_t k = 0; k < head; ++k)
+        if (!in_frame[k]) {
+            ++e.skipped;
+            if (s[k] == 0xFF) ++e.false_starts;
+        }
+    return e;
+}
+
+// Start bytes close together, as the chunk path takes 8 positions at a time.
+std::vector<std::uint8_t> dense_stream(rng& r, std::size_t size) {
+    std::vector<std::uint8_t> s;
+    while (s.size() < size) {
+        switch (r.below(7)) {
+        case 0: s.insert(s.end(), r.below(40), 0xFF); break;  // a run of FF
+        case 1: for (std::size_t k = r.below(20); k > 0; --k) { s.push_back(0xFF); s.push_back(0xAA); } break;
+        case 2: {  // a frame, sometimes with one marker wrong, sometimes after stray FFs
+            s.insert(s.end(), r.below(3), 0xFF);
+            frame10 f = random_frame(r);
+            if (r.below(3) == 0) f[1 + r.below(9)] ^= static_cast<std::uint8_t>(1 + r.below(255));
+            s.insert(s.end(), f.begin(), f.end());
+            break;
+        }
+        case 3: for (std::size_t k = r.below(20); k > 0; --k) s.push_back(static_cast<std::uint8_t>(r.below(0xFF))); break;
+        default: add_noise(r, s, r.below(6));
+        }
+    }
+    return s;
+}
+}  // namespace
+
+TEST_CASE("scanner: dense start bytes, hand-counted", "[osp][scanner]") {
+    struct golden {
+        std::vector<std::uint8_t> s;
+        std::size_t frames, pending;
+        std::uint64_t skipped, false_starts;
+    };
+    std::vector<golden> cases;
+    // 100 x FF: every FF but the last fails at its second byte; the last is held
+    cases.push_back({std::vector<std::uint8_t>(100, 0xFF), 0, 1, 99, 99});
+    // FF AA x 50: the candidates at 0..90 fail at EN1 (an FF); the one at 92 is held (8 bytes)
+    std::vector<std::uint8_t> ffaa;
+    for (int k = 0; k < 50; ++k) { ffaa.push_back(0xFF); ffaa.push_back(0xAA); }
+    cases.push_back({ffaa, 0, 8, 92, 46});
+    // three frames with a bad EN2, then a good one
+    std::vector<std::uint8_t> near;
+    const auto append = [](std::vector<std::uint8_t>& to, const auto& h) {
+        for (std::size_t k = 0; k < h.size(); ++k) to.push_back(h[k]);
+    };
+    for (int k = 0; k < 3; ++k) append(near, test::hex("FF AA 01 02 03 04 05 06 55 00"));
+    append(near, test::hex("FF AA 02 12 D2 04 00 00 55 77"));
+    cases.push_back({near, 1, 0, 30, 3});
+    // a stray FF before each of 5 frames
+    std::vector<std::uint8_t> stray;
+    for (int k = 0; k < 5; ++k) append(stray, test::hex("FF FF AA 02 12 D2 04 00 00 55 77"));
+    cases.push_back({stray, 5, 0, 5, 5});
+    for (const auto& g : cases)
+        for (std::size_t chunk : {1u, 9u, 10u, 17u, 18u, 25u, 32u, 64u, 4096u}) {
+            INFO("stream of " << g.s.size() << " bytes, chunk " << chunk);
+            const auto got = scan_in_chunks(g.s, chunk);
+            CHECK(got.frames.size() == g.frames);
+            CHECK(got.skipped == g.skipped);
+            CHECK(got.false_starts == g.false_starts);
+            scanner sc;
+            for (std::size_t i = 0; i < g.s.size(); i += chunk)
+                sc.feed(std::span(g.s).subspan(i, std::min(chunk, g.s.size() - i)), [](scanner::frame_bytes) {});
+            CHECK(sc.pending() == g.pending);
+        }
+}
+
+TEST_CASE("scanner: dense streams match the reference and its counters, any chunking", "[osp][scanner]") {
+    for (std::uint32_t seed = 1; seed <= 400; ++seed) {
+        rng r{seed * 2246822519u};
+        const auto s = dense_stream(r, 200 + r.below(600));
+        const auto want = expect(s);
+        for (std::size_t chunk : {1u, 10u, 17u, 18u, 19u, 24u, 25u, 26u, 33u, 64u, 100u, 4096u}) {
+            INFO("seed " << seed << " chunk " << chunk);
+            scanner sc;
+            std::vector<frame10> got;
+            for (std::size_t i = 0; i < s.size(); i += chunk)
+                sc.feed(std::span(s).subspan(i, std::min(chunk, s.size() - i)), [&](scanner::frame_bytes f) {
+                    // the counters are up to date in the callback
+                    const std::size_t k = got.size();
+                    REQUIRE(k < want.ends.size());
+                    CHECK(sc.frames() == k + 1);
+                    CHECK(sc.skipped() + 10 * sc.frames() == want.ends[k]);
+                    frame10 a{};
+                    for (std::size_t b = 0; b < 10; ++b) a[b] = f[b];
+                    got.push_back(a);
+                });
+            REQUIRE(got == want.frames);
+            CHECK(sc.skipped() == want.skipped);
+            CHECK(sc.false_starts() == want.false_starts);
+            CHECK(sc.pending() == want.pending);
+        }
+    }
+}

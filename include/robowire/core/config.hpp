@@ -43,6 +43,13 @@
 #else
 #define ROBOWIRE_COLD
 #endif
+// Keeps a function out of line: a loop entered rarely that runs long, whose
+// registers would otherwise crowd the caller's hot loop.
+#if defined(__GNUC__) || defined(__clang__)
+#define ROBOWIRE_NOINLINE [[gnu::noinline]]
+#else
+#define ROBOWIRE_NOINLINE
+#endif
 
 // ROBOWIRE_OPTIMIZE_SIZE: 1 takes the smaller of robowire's equivalent code
 // paths, with the same results (OSP scanner byte by byte, records and optional

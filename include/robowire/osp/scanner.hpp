@@ -4,6 +4,7 @@
 #include "../core/config.hpp"  // first: the C++ version check
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -27,7 +28,7 @@ public:
     using frame_bytes = std::span<const std::uint8_t, frame_size>;
 
     // Feeds `chunk`; calls on_frame(frame_bytes) for each frame found. The
-    // span is valid during the call only.
+    // span is valid during the call only; the counters are up to date in it.
     template <class OnFrame>
     constexpr void feed(std::span<const std::uint8_t> chunk, OnFrame&& on_frame) {
         const std::uint8_t* p = chunk.data();
@@ -37,45 +38,7 @@ public:
             for (std::size_t k = 0; k < n; ++k) push_byte(p[k], on_frame);
             return;
         }
-        std::size_t i = 0;
-        while (i < n) {
-            if (len_ != 0) {  // a partial candidate: complete it in one go if the chunk has the rest
-                const std::size_t had = len_, need = frame_size - had;
-                if (n - i >= need) {
-                    codec::copy_small(buf_.data() + had, p + i, need);
-                    if (buf_[1] == start2 && buf_[8] == end1 && buf_[9] == end2) {
-                        len_ = 0;
-                        ++frames_;
-                        i += need;
-                        on_frame(frame_bytes(buf_.data(), frame_size));
-                        continue;
-                    }
-                }
-                push_byte(p[i++], on_frame);
-                continue;
-            }
-            if (p[i] != start1) {  // skip noise up to the next start byte
-                const std::size_t start = find_start(p, i + 1, n);
-                skipped_ += start - i;
-                i = start;
-                if (i == n) break;
-            }
-            if (n - i < frame_size) {  // a short tail from a start byte: kept whole as the partial candidate
-                len_ = n - i;
-                codec::copy_small(buf_.data(), p + i, len_);
-                if (!partial_ok()) resync();
-                break;
-            }
-            if (p[i + 1] == start2 && p[i + 8] == end1 && p[i + 9] == end2) {  // a whole frame in the chunk
-                ++frames_;
-                on_frame(frame_bytes(p + i, frame_size));
-                i += frame_size;
-            } else {  // false start: resume at the next byte
-                ++false_starts_;
-                ++skipped_;
-                ++i;
-            }
-        }
+        feed_chunk(p, n, on_frame);
     }
 
     // Pushes one byte; returns the frame it completes, if any.
@@ -119,9 +82,82 @@ public:
     constexpr void reset() noexcept { *this = scanner{}; }
 
 private:
+    // A chunk of 10 bytes or more: memchr finds the start byte, frames are
+    // checked and reported in place, and where start bytes are dense,
+    // scan_words takes 8 positions at a time.
+    template <class OnFrame>
+    constexpr void feed_chunk(const std::uint8_t* p, std::size_t n, OnFrame& on_frame) {
+        std::size_t i = len_ != 0 ? finish_held(p, on_frame) : 0;  // the next position to look at
+        std::size_t mark = i;  // bytes from mark up to the next frame or held candidate are skipped
+        const std::size_t last = n - (frame_size - 1);  // a window starting here or later ends past the chunk
+        std::size_t at = p[i] == start1 ? i : find_start(p, i, n);  // after a held frame, often the next one
+        while (at < last) {
+            i = at;  // a start byte
+            if (rest_of_frame(p + i)) {
+                skipped_ += i - mark;
+                do {  // frames back to back: one check each, no search
+                    ++frames_;
+                    on_frame(frame_bytes(p + i, frame_size));
+                    i += frame_size;
+                } while (i < last && p[i] == start1 && rest_of_frame(p + i));
+                mark = i;
+                // the last 9 positions are looked at one by one below
+                at = i < last ? (p[i] == start1 ? i : find_start(p, i, n)) : i;
+                continue;
+            }
+            ++false_starts_;
+            at = find_start(p, ++i, n);
+            if (words_ok && at - i < dense_gap && at < last) {  // start bytes close together: 8 positions a step
+                skipped_ += at - mark;
+                i = mark = scan_words(p, at, n, on_frame);
+                at = i < last && p[i] == start1 ? i : find_start(p, i, n);
+            }
+        }
+        // The last 9 positions: their windows end past the chunk. Keep the
+        // first candidate that can still become a frame.
+        for (i = at; i < n; ++i) {
+            if (p[i] != start1) continue;
+            const std::size_t m = n - i;  // at most 9
+            if ((m < 2 || p[i + 1] == start2) && (m < 9 || p[i + 8] == end1)) {
+                len_ = m;
+                codec::copy_small(buf_.data(), p + i, m);
+                break;
+            }
+            ++false_starts_;
+        }
+        skipped_ += i - mark;
+    }
+
+    static constexpr std::size_t word = 8;        // positions per step of scan_words
+    static constexpr std::size_t dense_gap = 16;  // a start byte this close after a false start: scan_words
+    using word_t = std::uint64_t;
+    static constexpr word_t lanes(std::uint8_t b) noexcept { return word_t{b} * 0x0101010101010101u; }
+
+    // The held candidate and the chunk's first 9 bytes, which complete every
+    // window that starts in the held bytes: reports the first frame there or
+    // drops the held bytes. Returns the position in the chunk to go on from.
+    template <class OnFrame>
+    constexpr std::size_t finish_held(const std::uint8_t* p, OnFrame& on_frame) {
+        const std::size_t held = len_;
+        std::array<std::uint8_t, 2 * frame_size - 1> c;  // every byte read is written
+        codec::copy_small(c.data(), buf_.data(), frame_size);
+        codec::copy_small(c.data() + held, p, frame_size - 1);
+        len_ = 0;
+        for (std::size_t q = 0; q < held; ++q) {
+            if (c[q] != start1) continue;
+            if (frame_at(c.data() + q)) {
+                skipped_ += q;
+                ++frames_;
+                on_frame(frame_bytes(c.data() + q, frame_size));
+                return q + frame_size - held;
+            }
+            ++false_starts_;
+        }
+        skipped_ += held;
+        return 0;
+    }
     // Index of the next start byte in p[from..n), or n.
     static constexpr std::size_t find_start(const std::uint8_t* p, std::size_t from, std::size_t n) noexcept {
-        if (from >= n) return n;
         if (!std::is_constant_evaluated()) {
             const void* hit = std::memchr(p + from, start1, n - from);
             return hit ? static_cast<std::size_t>(static_cast<const std::uint8_t*>(hit) - p) : n;
@@ -129,6 +165,79 @@ private:
         while (from < n && p[from] != start1) ++from;
         return from;
     }
+    static constexpr bool frame_at(const std::uint8_t* w) noexcept { return w[0] == start1 && rest_of_frame(w); }
+    static constexpr bool rest_of_frame(const std::uint8_t* w) noexcept {  // after a start byte
+        return w[1] == start2 && w[8] == end1 && w[9] == end2;
+    }
+    // Eight positions at a time (where start bytes are dense, as in long
+    // runs of FF or FF AA): from i, reports the frames and counts the other
+    // start bytes as false starts, until 16 positions in a row hold no start
+    // byte or a frame follows the last one directly (the caller checks such
+    // frames one by one, more cheaply). Returns the position to go on from;
+    // the bytes from i up to it in no frame are counted as skipped.
+    static constexpr bool words_ok =
+        std::endian::native == std::endian::little || std::endian::native == std::endian::big;
+    template <class OnFrame>
+    ROBOWIRE_NOINLINE constexpr std::size_t scan_words(const std::uint8_t* p, std::size_t i, std::size_t n,
+                                                       OnFrame& on_frame) {
+        constexpr word_t low7 = lanes(0x7F), high = lanes(0x80);
+        std::size_t mark = i;
+        bool reported = false, empty = false;
+        while (i + word + frame_size - 1 <= n) {  // the windows of the 8 positions lie in the chunk
+            const word_t w0 = load(p + i);
+            const word_t ff = ((w0 & low7) + lanes(0x01)) & w0 & high;  // lanes holding FF
+            if (ff == 0) {  // 16 positions without a start byte end the step
+                i += word;
+                if (empty) break;
+                empty = true;
+                continue;
+            }
+            empty = false;
+            // a lane of z is 0 where ST2, EN1 and EN2 follow
+            const word_t z =
+                (load(p + i + 1) ^ lanes(start2)) | (load(p + i + 8) ^ lanes(end1)) | (load(p + i + 9) ^ lanes(end2));
+            const word_t hit = ff & ~(((z & low7) + low7) | z);  // lanes where a frame starts
+            if (hit == 0) {
+                false_starts_ += count(ff);
+                i += word;
+                continue;
+            }
+            const std::size_t k = first_lane(hit);
+            if (k == 0 && reported && i == mark) break;  // frames back to back: the caller's loop takes them
+            false_starts_ += count(ff & before(k));
+            i += k;
+            skipped_ += i - mark;
+            ++frames_;
+            on_frame(frame_bytes(p + i, frame_size));
+            i += frame_size;
+            mark = i;
+            reported = true;
+        }
+        skipped_ += i - mark;
+        return i;
+    }
+    // 8 bytes in host order (lane k: the byte at p + k).
+    static constexpr word_t load(const std::uint8_t* p) noexcept {
+        word_t w = 0;
+        if (std::is_constant_evaluated()) {
+            for (std::size_t k = 0; k < word; ++k)
+                w |= word_t{p[k]} << (std::endian::native == std::endian::little ? 8 * k : 56 - 8 * k);
+        } else {
+            std::memcpy(&w, p, sizeof w);
+        }
+        return w;
+    }
+    // Lanes are marked by their high bit.
+    static constexpr std::size_t first_lane(word_t m) noexcept {
+        return static_cast<std::size_t>(std::endian::native == std::endian::little ? std::countr_zero(m)
+                                                                                   : std::countl_zero(m)) /
+               8;
+    }
+    static constexpr word_t before(std::size_t k) noexcept {  // the lanes before lane k
+        return std::endian::native == std::endian::little ? (word_t{1} << (8 * k)) - 1 : ~(~word_t{0} >> (8 * k));
+    }
+    static constexpr std::uint64_t count(word_t m) noexcept { return ((m >> 7) * lanes(1)) >> 56; }
+
     // Can the partial candidate (shorter than a frame, starting with ST1)
     // still become a frame: its ST2 and EN1, where it has them.
     constexpr bool partial_ok() const noexcept {
