@@ -80,6 +80,16 @@ inline constexpr bool message_via_local = !ROBOWIRE_COPY_RUNS, alternative_via_l
 #else
 inline constexpr bool message_via_local = false, alternative_via_local = true;
 #endif
+// The write pass: M's fields from an input whose fixed bytes, length and
+// fields are checked (check_record); no branch, runs copied at once.
+template <class M>
+ROBOWIRE_ALWAYS_INLINE constexpr void write_body(M& out, std::span<const std::uint8_t> in) noexcept {
+    constexpr std::size_t extent = table_v<M>.max_size();
+    prechecked none{};
+    (void)decode_record<M>(out, in.size() > extent ? in.first(extent) : in, 0, none,
+                           std::make_index_sequence<field_count_v<M>>{});
+    if constexpr (reports_trailing<M>) out.ignored_trailing_bytes = in.size() > extent ? in.size() - extent : 0;
+}
 // The fields of M, from an input whose fixed bytes and length are checked.
 // OnePass false: every field is checked before the first is written, so on
 // an error `out` is left as it was, and runs of fields are copied at once.
@@ -97,9 +107,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, std::span<const std::
         return err;
     }
     if (!check_record<M>(in, 0, err, fields)) return err;  // reads the first `extent` bytes only
-    prechecked none{};
-    (void)decode_record<M>(out, in.size() > extent ? in.first(extent) : in, 0, none, fields);
-    if constexpr (reports_trailing<M>) out.ignored_trailing_bytes = in.size() > extent ? in.size() - extent : 0;
+    write_body(out, in);
     return err;
 }
 // The error of an input that fails input_ok's test: the first wrong fixed
@@ -264,14 +272,18 @@ template <described M>
         return r;
     } else {
         if (!detail::input_ok<detail::no_offset, M>(r, in)) return r;
+        if (error e{}; !detail::check_record<M>(in, 0, e, std::make_index_sequence<detail::field_count_v<M>>{})) {
+            r = e;  // checked before the message is made: nothing to undo
+            return r;
+        }
         if constexpr (detail::message_via_local && detail::decode_writes_every_member_v<M>) {
             M local{};
-            if (const error e = detail::decode_body(local, in); e.code != errc::ok) r = e;
-            else detail::build_value(r, local);
+            detail::write_body(local, in);
+            detail::build_value(r, local);
         } else if constexpr (detail::flat_record_v<M>) {  // every member written: no initialiser stored first
-            if (const error e = detail::decode_body(detail::build_unset(r), in); e.code != errc::ok) r = e;
-        } else if (const error e = detail::decode_body(detail::build_default(r), in); e.code != errc::ok) {
-            r = e;
+            detail::write_body(detail::build_unset(r), in);
+        } else {
+            detail::write_body(detail::build_default(r), in);
         }
         return r;
     }
