@@ -8,6 +8,7 @@
 #include "core/bytes.hpp"
 #include "core/decode.hpp"
 #include "core/dispatch.hpp"
+#include "core/divide.hpp"
 #include "core/encode.hpp"
 #include "core/endian.hpp"
 #include "core/fields.hpp"

@@ -9,7 +9,7 @@
 #include <type_traits>
 #include <utility>
 
-#include "../core/detail/divide.hpp"
+#include "../core/divide.hpp"
 #include "commands.hpp"
 #include "status.hpp"
 
@@ -128,8 +128,8 @@ constexpr std::uint16_t motor_milliamps(std::uint8_t raw) noexcept { return stat
 // -15990784..15990296).
 constexpr std::int32_t accel_micro_g(std::int16_t word) noexcept { return std::int32_t{word} * 488; }
 namespace units_detail {
-// The division of accel_milli_g_rounded (see robowire/core/detail/divide.hpp).
-using milli_g_by_125 = robowire::detail::divider<125, ((32768u * 488u + 500u) >> 3), 2097, 18, 2>;
+// The division of accel_milli_g_rounded (see robowire/core/divide.hpp).
+using milli_g_by_125 = robowire::codec::divider<125, ((32768u * 488u + 500u) >> 3), 2097, 18, 2>;
 }  // namespace units_detail
 // Acceleration in whole milli-g: word x 0.488 rounded half away from zero
 // (-15991..15990). No library division on a core without a divide

@@ -245,6 +245,16 @@ constexpr error decode_raw(M& out, const std::uint8_t* data, std::size_t size) n
 }
 }  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE
 
+namespace codec::inline ROBOWIRE_MODE_NAMESPACE {
+// Every fixed byte of M is right in `in` (which holds at least
+// table_v<M>.min_size() bytes), in one test: the bytes as masked words where
+// the target loads unaligned little-endian words (ROBOWIRE_COPY_RUNS).
+template <described M>
+ROBOWIRE_ALWAYS_INLINE constexpr bool fixed_bytes_match(std::span<const std::uint8_t> in) noexcept {
+    return detail::fixed_match<detail::no_offset, M>(in, std::make_index_sequence<detail::fixed_count_v<M>>{});
+}
+}  // namespace codec::inline ROBOWIRE_MODE_NAMESPACE
+
 inline namespace ROBOWIRE_MODE_NAMESPACE {
 
 // Decodes `in` into `out` (an existing object, e.g. one refreshed 20 times a

@@ -126,8 +126,7 @@ constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
         if (in.size() > frame_size) return fail(errc::too_long, frame_size);
         return {};
     } else {  // unrolled: faster on hosts
-        if (in.size() == frame_size && detail::fixed_match<detail::no_offset, osp::frame>(
-                                           in, std::make_index_sequence<markers.size()>{})) [[likely]]
+        if (in.size() == frame_size && codec::fixed_bytes_match<osp::frame>(in)) [[likely]]
             return {};
         return frame_error(in);
     }

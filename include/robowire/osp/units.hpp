@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <numbers>
 
-#include "../core/detail/divide.hpp"
+#include "../core/divide.hpp"
 #include "messages.hpp"
 
 namespace robowire::osp {
@@ -45,9 +45,9 @@ constexpr result<std::uint16_t> angle_from_radians(double radians, scale s = sca
 
 namespace obp1 {
 namespace units_detail {
-// The divisions of the integer forms below (see robowire/core/detail/divide.hpp).
-using millivolts_by_10 = robowire::detail::divider<10, 327689, 6554, 16, 2>;            // (|mv| + 5) / 10
-using sixteenths_by_625 = robowire::detail::divider<625, (55355000 >> 4), 839, 19, 1>;  // (bp x 5535 + 5000) / 16 / 625
+// The divisions of the integer forms below (see robowire/core/divide.hpp).
+using millivolts_by_10 = robowire::codec::divider<10, 327689, 6554, 16, 2>;            // (|mv| + 5) / 10
+using sixteenths_by_625 = robowire::codec::divider<625, (55355000 >> 4), 839, 19, 1>;  // (bp x 5535 + 5000) / 16 / 625
 }  // namespace units_detail
 // ---- integer forms (no floating point)
 // Battery voltage in millivolts: raw x 10 (document, -327680..327670) or raw (published firmware).

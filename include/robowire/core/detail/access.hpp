@@ -149,16 +149,21 @@ inline constexpr bool flat_record_v = flat_record<M>();
 // M has a text or tail field (directly or in a record): a decode that checks
 // before it writes walks those bytes twice.
 template <class M>
+constexpr bool has_text_or_tail() noexcept;
+template <class M, std::size_t I>
+constexpr bool field_has_text_or_tail() noexcept {
+    using F = field_t<M, I>;
+    if constexpr (F::kind == wire_kind::text || F::kind == wire_kind::tail) return true;
+    else if constexpr (F::kind == wire_kind::record) return has_text_or_tail<typename F::element_type>();
+    else return false;
+}
+template <class M, std::size_t... I>
+constexpr bool any_text_or_tail(std::index_sequence<I...>) noexcept {
+    return (field_has_text_or_tail<M, I>() || ... || false);
+}
+template <class M>
 constexpr bool has_text_or_tail() noexcept {
-    return []<std::size_t... I>(std::index_sequence<I...>) {
-        return ([] {
-            using F = field_t<M, I>;
-            if constexpr (F::kind == wire_kind::text || F::kind == wire_kind::tail) return true;
-            else if constexpr (F::kind == wire_kind::record) return has_text_or_tail<typename F::element_type>();
-            else return false;
-        }() || ...);
-    }
-    (std::make_index_sequence<field_count_v<M>>{});
+    return any_text_or_tail<M>(std::make_index_sequence<field_count_v<M>>{});
 }
 
 // ---- runs (ROBOWIRE_COPY_RUNS, at run time; decode and encode): fields

@@ -1,12 +1,12 @@
-// robowire/core/detail/divide.hpp - division by a constant without a divide
+// robowire/core/divide.hpp - division by a constant without a divide
 // instruction, for the integer unit helpers.
 #pragma once
 
-#include "../config.hpp"  // first: the C++ version check
+#include "config.hpp"  // first: the C++ version check
 
 #include <cstdint>
 
-namespace robowire::detail {
+namespace robowire::codec {
 
 // The target has no integer divide instruction (Cortex-M0/M0+/M23 and other
 // ARMv6-M/ARMv8-M baseline cores, RISC-V without the M extension's division):
@@ -42,4 +42,4 @@ struct divider {
     }
 };
 
-}  // namespace robowire::detail
+}  // namespace robowire::codec
