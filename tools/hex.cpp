@@ -44,6 +44,12 @@ std::string shown(char c) {
 
 std::optional<byte_vector> parse_hex_text(std::string_view text, std::string& error) {
     byte_vector out;
+    if (!parse_hex_into(text, out, error)) return std::nullopt;
+    return out;
+}
+
+bool parse_hex_into(std::string_view text, byte_vector& out, std::string& error) {
+    out.clear();
     std::size_t i = 0;
     while (i < text.size()) {
         if (is_separator(text[i])) {
@@ -62,7 +68,7 @@ std::optional<byte_vector> parse_hex_text(std::string_view text, std::string& er
         for (std::size_t k = d; k < end; ++k) {
             if (digit(text[k]) < 0) {
                 error = "bad hex: " + shown(text[k]) + " at character " + std::to_string(k) + " is not a hex digit";
-                return std::nullopt;
+                return false;
             }
         }
         const std::size_t digits = end - d;
@@ -72,9 +78,9 @@ std::optional<byte_vector> parse_hex_text(std::string_view text, std::string& er
             continue;
         }
         if (digits == 0 || digits % 2 != 0) {
-            error = "bad hex: odd number of hex digits in \"" + std::string(text.substr(start, end - start)) +
+            error = "bad hex: odd number of hex digits in \"" + shorten(text.substr(start, end - start)) +
                     "\" at character " + std::to_string(start) + " (each byte is two hex digits, or one after 0x)";
-            return std::nullopt;
+            return false;
         }
         for (std::size_t k = d; k < end; k += 2)
             out.push_back(static_cast<std::uint8_t>(digit(text[k]) << 4 | digit(text[k + 1])));
@@ -82,9 +88,9 @@ std::optional<byte_vector> parse_hex_text(std::string_view text, std::string& er
     }
     if (out.empty()) {
         error = "bad hex: no hex bytes given";
-        return std::nullopt;
+        return false;
     }
-    return out;
+    return true;
 }
 
 bool looks_like_hex_text(std::span<const std::uint8_t> data) {

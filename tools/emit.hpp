@@ -1,0 +1,536 @@
+// A decoded message written straight into an output buffer, in each format
+// (text rows, one JSON object, one CSV row and its header), from the
+// library's field tables: no intermediate tree, no JSON document.
+// Included by the protocol modules only (buwizz3.cpp, navbot.cpp, osp.cpp).
+#pragma once
+
+#include <robowire/core/fields.hpp>
+#include <robowire/core/flag_bits.hpp>
+#include <robowire/robowire.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <type_traits>
+#include <variant>
+
+#include "cli.hpp"
+#include "text.hpp"
+
+namespace robowire::cli::emit {
+
+template <class F>
+using element_t = typename F::element_type;
+
+// ---------------------------------------------------------------- numbers
+inline void put_int(std::string& o, std::int64_t v) {
+    char b[24];
+    o.append(b, std::to_chars(b, b + sizeof b, v).ptr);
+}
+// printf's %.6g (text output)
+inline void put_g6(std::string& o, double v) {
+    char b[48];
+    o.append(b, std::to_chars(b, b + sizeof b, v, std::chars_format::general, 6).ptr);
+}
+// The shortest text that reads back as v (CSV); precision 15: rounded to 15 significant digits first.
+inline void put_shortest(std::string& o, double v, int precision = 17) {
+    char b[48];
+    o.append(b, precision == 15 ? std::to_chars(b, b + sizeof b, v, std::chars_format::general, 15).ptr
+                                : std::to_chars(b, b + sizeof b, v).ptr);
+}
+// A JSON number as nlohmann/json writes a double, ".0" after an integer. precision 15:
+// the shortest text of v rounded to 15 significant digits (what tidy(v) writes).
+inline void put_json_double(std::string& o, double v, int precision = 17) {
+    if (!std::isfinite(v)) {
+        o += "null";
+        return;
+    }
+    char b[48];
+    char* e = precision == 15 ? std::to_chars(b, b + sizeof b, v, std::chars_format::general, 15).ptr
+                              : std::to_chars(b, b + sizeof b, v).ptr;
+    o.append(b, e);
+    if (std::find_if(b, e, [](char c) { return c == '.' || c == 'e'; }) == e) o += ".0";
+}
+// Rounded to 15 significant digits (13.000000000000002 -> 13): physical values.
+inline double tidy(double v) {
+    char b[48];
+    char* e = std::to_chars(b, b + sizeof b, v, std::chars_format::general, 15).ptr;
+    double r = v;
+    std::from_chars(b, e, r);
+    return r;
+}
+
+// A physical value (raw x scale + offset), rounded to 15 significant digits by tidy (text),
+// or not (JSON and CSV: their writers round it with precision 15, which gives the same text).
+template <class F>
+double physical_untidy(const F& f, std::int64_t raw) {
+    return static_cast<double>(raw) * f.unit.scale + f.unit.offset;
+}
+template <class F>
+double physical(const F& f, std::int64_t raw) {
+    return tidy(physical_untidy(f, raw));
+}
+
+// Leaves with a physical value: integers whose field has a unit.
+template <class F>
+constexpr bool has_physical() {
+    using E = element_t<F>;
+    return std::is_integral_v<E> && !std::is_same_v<E, bool>;
+}
+// Long byte arrays without meaning per byte (a payload): one hex value.
+template <class F>
+bool is_hex_array(const F& f) {
+    if constexpr (F::is_array && F::kind == wire_kind::u8 && std::is_same_v<element_t<F>, std::uint8_t> &&
+                  F::count >= 8)
+        return f.unit.name.empty();
+    else return false;
+}
+// Its bytes (empty for any other field).
+template <class F, class V>
+std::span<const std::uint8_t> hex_bytes(const V& v) {
+    if constexpr (F::is_array && std::is_same_v<element_t<F>, std::uint8_t>) return {v.data(), v.size()};
+    else return {};
+}
+
+// "battery_voltage_raw" -> "battery_voltage", "centivolts" -> "centivolts_physical"
+inline void put_physical_key(std::string& o, std::string_view key) {
+    constexpr std::string_view raw = "_raw";
+    if (key.size() > raw.size() && key.substr(key.size() - raw.size()) == raw) o.append(key.substr(0, key.size() - 4));
+    else o.append(key).append("_physical");
+}
+
+// The NAVBOT JSON payload as text (up to its first zero byte), for frames of the JSON command.
+template <class M>
+bool payload_text(const M& m, std::string_view field, std::string& text) {
+    if constexpr (std::is_same_v<M, robowire::navbot::frame>) {
+        if (field != "payload" || m.command != robowire::navbot::command::json) return false;
+        text.clear();
+        for (const std::uint8_t b : m.payload) {
+            if (b == 0) break;
+            text += static_cast<char>(b);
+        }
+        return true;
+    } else {
+        (void)m, (void)field, (void)text;
+        return false;
+    }
+}
+
+// ---------------------------------------------------------------- text rows
+// A leaf's text: "80 (13 V)", "charging (0x03)", "109 = error | charging", "\"name\"".
+template <class M, class F, class E>
+void text_value(std::string& o, const F& f, const E& v) {
+    if constexpr (std::is_same_v<E, bool>) {
+        o += v ? "true" : "false";
+    } else if constexpr (std::is_enum_v<E>) {
+        o.append(robowire::enum_name(v)).append(" (").append(hex2(static_cast<unsigned>(v))).append(")");
+    } else if constexpr (std::is_same_v<E, float>) {
+        put_g6(o, static_cast<double>(v));
+    } else if constexpr (std::is_integral_v<E>) {
+        const auto i = static_cast<std::int64_t>(v);
+        put_int(o, i);
+        if (!f.unit.name.empty()) {
+            if (f.unit.scale != 1.0 || f.unit.offset != 0.0) {
+                o += " (";
+                put_g6(o, physical(f, i));
+                o.append(" ").append(f.unit.name).append(")");
+            } else {
+                o.append(" ").append(f.unit.name);
+            }
+        }
+        if constexpr (robowire::has_flag_bits<M>) {
+            const auto raw = static_cast<unsigned>(i);
+            unsigned known = 0;
+            bool any_bits = false, any_shown = false;
+            std::size_t mark = o.size();
+            for (const auto& b : robowire::flag_bits_v<M>) {
+                if (b.field != f.name) continue;
+                if (!any_bits) {
+                    o += " = ";
+                    mark = o.size();
+                    any_bits = true;
+                }
+                const unsigned mask = ((1u << b.width) - 1u) << b.lo;
+                known |= mask;
+                const unsigned value = (raw & mask) >> b.lo;
+                if (b.width == 1 && !value) continue;
+                if (any_shown) o += " | ";
+                any_shown = true;
+                o.append(b.name);
+                if (b.width > 1) {
+                    o += ' ';
+                    if (value < b.values.size() && !b.values[value].empty()) o.append(b.values[value]);
+                    else put_int(o, value);
+                }
+            }
+            if (any_bits) {
+                for (unsigned bit = 0; bit < 8; ++bit) {
+                    if (!((raw & ~known) & (1u << bit))) continue;
+                    o += any_shown ? " | bit" : "bit";
+                    any_shown = true;
+                    put_int(o, bit);
+                }
+                if (!any_shown) o.insert(mark, "(none)");
+            }
+        }
+    } else if constexpr (requires { v.view(); }) {
+        o.append("\"").append(v.view()).append("\"");
+    } else {
+        if (v.empty()) o += "(none)";
+        else o += hex_of(v.span());
+    }
+}
+
+// A field path as text rows show it: "pu_motors[1].position" (at most 200 characters).
+struct path_buf {
+    char s[200];
+    std::size_t n = 0;
+    void push(std::string_view x) {
+        const std::size_t k = std::min(x.size(), sizeof s - n);
+        std::copy_n(x.data(), k, s + n);
+        n += k;
+    }
+    void push_index(std::size_t i) {
+        char b[24];
+        b[0] = '[';
+        char* e = std::to_chars(b + 1, b + sizeof b - 1, i).ptr;
+        *e++ = ']';
+        push(std::string_view(b, static_cast<std::size_t>(e - b)));
+    }
+    std::string_view view() const { return {s, n}; }
+};
+
+// Calls row(path, write_value) for each text row of m, in order; write_value(o) appends the row's value.
+template <class M, class Row>
+void for_each_row(const M& m, path_buf& p, Row& row) {
+    robowire::for_each_field<M>([&](const auto& f) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        const std::size_t mark = p.n;
+        if (mark) p.push(".");
+        p.push(f.name);
+        auto element = [&](const auto& e) {
+            if constexpr (F::kind == wire_kind::record) for_each_row(e, p, row);
+            else row(p.view(), [&](std::string& o) { text_value<M>(o, f, e); });
+        };
+        auto value = [&](const auto& v) {
+            if constexpr (F::is_array) {
+                if (is_hex_array(f)) {
+                    row(p.view(), [&](std::string& o) { o += hex_of(hex_bytes<F>(v)); });
+                } else {
+                    for (std::size_t i = 0; i < v.size(); ++i) {
+                        const std::size_t at = p.n;
+                        p.push_index(i);
+                        element(v[i]);
+                        p.n = at;
+                    }
+                }
+            } else {
+                element(v);
+            }
+        };
+        const auto& member = m.*(f.member);
+        if constexpr (F::is_optional) {
+            if (member) value(*member);
+            else row(p.view(), [](std::string& o) { o += "(absent)"; });
+        } else {
+            value(member);
+        }
+        thread_local std::string text;
+        if (payload_text(m, f.name, text)) {
+            const std::size_t at = p.n;
+            p.push(" (text)");
+            row(p.view(), [&](std::string& o) { o += text; });
+            p.n = at;
+        }
+        p.n = mark;
+    });
+}
+
+// "protocol message" then one row per field, then the notes.
+template <class M>
+void write_text(std::string& o, std::string_view protocol, const M& m, const std::vector<std::string>& notes) {
+    o.append(protocol).append(" ").append(robowire::table_v<M>.name).append("\n");
+    std::size_t w = 0;
+    {
+        path_buf p;
+        auto width = [&](std::string_view path, const auto&) { w = std::max(w, path.size()); };
+        for_each_row(m, p, width);
+    }
+    path_buf p;
+    auto write = [&](std::string_view path, const auto& value) {
+        o.append("  ").append(path).append(w - path.size() + 2, ' ');
+        value(o);
+        o += '\n';
+    };
+    for_each_row(m, p, write);
+    for (const auto& n : notes) o.append("  note: ").append(n).append("\n");
+}
+
+// ---------------------------------------------------------------- JSON
+template <class M, class F, class E>
+void json_value(std::string& o, const F& f, const E& v);
+
+template <class M>
+void write_json_object(std::string& o, const M& m) {
+    o += '{';
+    bool first = true;
+    auto key = [&](auto&&... parts) {
+        if (!first) o += ',';
+        first = false;
+        o += '"';
+        (o.append(parts), ...);
+        o += "\":";
+    };
+    robowire::for_each_field<M>([&](const auto& f) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        using E = element_t<F>;
+        const auto& member = m.*(f.member);
+        auto value = [&](const auto& v) {
+            if constexpr (F::is_array) {
+                o += '[';
+                for (std::size_t i = 0; i < v.size(); ++i) {
+                    if (i) o += ',';
+                    json_value<M>(o, f, v[i]);
+                }
+                o += ']';
+            } else {
+                json_value<M>(o, f, v);
+            }
+        };
+        key(f.name);
+        const bool present = [&] {
+            if constexpr (F::is_optional) return member.has_value();
+            else return true;
+        }();
+        if (!present) {
+            o += "null";
+            return;
+        }
+        const auto& v = [&]() -> const auto& {
+            if constexpr (F::is_optional) return *member;
+            else return member;
+        }();
+        value(v);
+        if constexpr (has_physical<F>()) {
+            if (!f.unit.name.empty()) {
+                o += ',';
+                o += '"';
+                put_physical_key(o, f.name);
+                o += "\":{\"value\":";
+                if constexpr (F::is_array) {
+                    o += '[';
+                    for (std::size_t i = 0; i < v.size(); ++i) {
+                        if (i) o += ',';
+                        put_json_double(o, physical_untidy(f, static_cast<std::int64_t>(v[i])), 15);
+                    }
+                    o += ']';
+                } else {
+                    put_json_double(o, physical_untidy(f, static_cast<std::int64_t>(v)), 15);
+                }
+                o.append(",\"unit\":");
+                put_json_string(o, f.unit.name);
+                o += '}';
+            }
+            if constexpr (robowire::has_flag_bits<M> && !F::is_array) {
+                const auto raw = static_cast<unsigned>(v);
+                bool any = false;
+                for (const auto& b : robowire::flag_bits_v<M>) {
+                    if (b.field != f.name) continue;
+                    o += any ? "," : ",\"";
+                    if (!any) o.append(f.name).append("_bits\":{");
+                    any = true;
+                    const unsigned value_bits = (raw >> b.lo) & ((1u << b.width) - 1u);
+                    o.append("\"").append(b.name).append("\":");
+                    if (b.width == 1) {
+                        o += value_bits ? "true" : "false";
+                    } else {
+                        o += '"';
+                        if (value_bits < b.values.size() && !b.values[value_bits].empty()) o.append(b.values[value_bits]);
+                        else put_int(o, value_bits);
+                        o += '"';
+                    }
+                }
+                if (any) o += '}';
+            }
+        }
+        (void)sizeof(E);
+        thread_local std::string text;
+        if (payload_text(m, f.name, text)) {
+            o.append(",\"").append(f.name).append("_text\":");
+            put_json_string(o, text);
+        }
+    });
+    o += '}';
+}
+
+template <class M, class F, class E>
+void json_value(std::string& o, const F& f, const E& v) {
+    (void)f;
+    if constexpr (F::kind == wire_kind::record) {
+        write_json_object(o, v);
+    } else if constexpr (std::is_same_v<E, bool>) {
+        o += v ? "true" : "false";
+    } else if constexpr (std::is_enum_v<E>) {
+        put_json_string(o, robowire::enum_name(v));
+    } else if constexpr (std::is_same_v<E, float>) {
+        put_json_double(o, static_cast<double>(v));
+    } else if constexpr (std::is_integral_v<E>) {
+        put_int(o, static_cast<std::int64_t>(v));
+    } else if constexpr (requires { v.view(); }) {
+        put_json_string(o, v.view());
+    } else {
+        o += '"';
+        o += hex_of(v.span());
+        o += '"';
+    }
+}
+
+// ---------------------------------------------------------------- CSV
+// A CSV header name: "pu_motors_0.position[deg]", "battery_voltage[V]"
+struct csv_path {
+    std::string s;
+};
+template <class M>
+void csv_header(std::string& o, std::string& prefix) {
+    robowire::for_each_field<M>([&](const auto& f) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        auto leaf = [&](const std::string& at) {
+            if constexpr (F::kind == wire_kind::record) {
+                std::string inner = at + ".";
+                csv_header<element_t<F>>(o, inner);
+            } else {
+                o += ',';
+                std::string name;
+                if constexpr (has_physical<F>()) {
+                    if (!f.unit.name.empty()) {
+                        put_physical_key(name, f.name);
+                        name = prefix + name + at.substr(prefix.size() + f.name.size());
+                        name.append("[").append(f.unit.name).append("]");
+                    } else {
+                        name = at;
+                    }
+                } else {
+                    name = at;
+                }
+                put_csv_cell(o, name);
+            }
+        };
+        const std::string at = prefix + std::string(f.name);
+        if constexpr (F::is_array) {
+            if (is_hex_array(f)) {
+                o += ',';
+                put_csv_cell(o, at);
+            } else {
+                for (std::size_t i = 0; i < F::count; ++i) leaf(at + "_" + std::to_string(i));
+            }
+        } else {
+            leaf(at);
+        }
+    });
+}
+
+// One cell per leaf of m (m null: an absent optional block, empty cells).
+template <class M>
+void csv_cells(std::string& o, const M* m) {
+    robowire::for_each_field<M>([&](const auto& f) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        using E = element_t<F>;
+        auto cell = [&](const E* v) {
+            if constexpr (F::kind == wire_kind::record) {
+                csv_cells<E>(o, v);
+            } else {
+                o += ',';
+                if (!v) return;
+                if constexpr (std::is_same_v<E, bool>) {
+                    o += *v ? "true" : "false";
+                } else if constexpr (std::is_enum_v<E>) {
+                    o.append(robowire::enum_name(*v));
+                } else if constexpr (std::is_same_v<E, float>) {
+                    if (std::isfinite(*v)) put_shortest(o, static_cast<double>(*v));
+                } else if constexpr (std::is_integral_v<E>) {
+                    if (!f.unit.name.empty()) put_shortest(o, physical_untidy(f, static_cast<std::int64_t>(*v)), 15);
+                    else put_int(o, static_cast<std::int64_t>(*v));
+                } else if constexpr (requires { v->view(); }) {
+                    put_csv_cell(o, v->view());
+                } else {
+                    o += hex_of(v->span());
+                }
+            }
+        };
+        const auto* value = [&]() -> const auto* {
+            using T = std::remove_cvref_t<decltype(m->*(f.member))>;
+            if constexpr (F::is_optional) {
+                using V = typename T::value_type;
+                return m && (m->*(f.member)) ? &*(m->*(f.member)) : static_cast<const V*>(nullptr);
+            } else {
+                return m ? &(m->*(f.member)) : static_cast<const T*>(nullptr);
+            }
+        }();
+        if constexpr (F::is_array) {
+            if (is_hex_array(f)) {
+                o += ',';
+                if (value) o += hex_of(hex_bytes<F>(*value));
+            } else {
+                for (std::size_t i = 0; i < F::count; ++i) cell(value ? &(*value)[i] : nullptr);
+            }
+        } else {
+            cell(value);
+        }
+    });
+}
+
+// ---------------------------------------------------------------- a record
+// A decoded message as one record of `out`'s format, after `meta`; `notes` for text and JSON.
+template <class M>
+void message(output& out, const record_meta& meta, std::string_view protocol, const M& m,
+             const std::vector<std::string>& notes) {
+    std::string& o = out.buf;
+    switch (out.kind) {
+    case format_kind::text:
+        put_text_prefix(o, meta);
+        write_text(o, protocol, m, notes);
+        break;
+    case format_kind::json:
+        put_json_head(o, "message", meta);
+        o.append(",\"protocol\":\"").append(protocol).append("\",\"message\":\"");
+        o.append(robowire::table_v<M>.name).append("\",\"fields\":");
+        write_json_object(o, m);
+        if (!notes.empty()) {
+            o += ",\"notes\":[";
+            for (std::size_t i = 0; i < notes.size(); ++i) {
+                if (i) o += ',';
+                put_json_string(o, notes[i]);
+            }
+            o += ']';
+        }
+        o += "}\n";
+        break;
+    case format_kind::csv: {
+        std::string* t = out.csv_table(protocol, robowire::table_v<M>.name, [](std::string& h) {
+            h = "time,line,direction";
+            std::string prefix;
+            csv_header<M>(h, prefix);
+            h += '\n';
+        });
+        if (!t) return;
+        put_csv_cell(*t, meta.time);
+        *t += ',';
+        if (meta.line) put_int(*t, static_cast<std::int64_t>(meta.line));
+        *t += ',';
+        *t += direction_key(meta.dir);
+        csv_cells(*t, &m);
+        *t += '\n';
+        break;
+    }
+    }
+    out.end_record();
+}
+
+// A decoded variant as a record.
+template <class V>
+void variant_message(output& out, const record_meta& meta, std::string_view protocol, const V& v,
+                     const std::vector<std::string>& notes) {
+    std::visit([&](const auto& m) { message(out, meta, protocol, m, notes); }, v);
+}
+
+}  // namespace robowire::cli::emit
