@@ -10,8 +10,10 @@
 //   main.cpp       commands and options (CLI11), scan and monitor
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <span>
 #include <string>
@@ -43,6 +45,61 @@ bool parse_hex_into(std::string_view text, byte_vector& out, std::string& error)
 bool looks_like_hex_text(std::span<const std::uint8_t> data);
 // "01 6D 50"
 std::string hex_of(std::span<const std::uint8_t> bytes);
+
+// An output buffer: appends with one bounds check (most of the tool's time
+// goes to writing records into it).
+class buffer {
+public:
+    buffer() { reserve(1 << 12); }
+    ~buffer() { delete[] data_; }
+    buffer(const buffer&) = delete;
+    buffer& operator=(const buffer&) = delete;
+    buffer& append(const char* s, std::size_t n) {
+        if (n > cap_ - size_) reserve(size_ + n);
+        if (n) std::memcpy(data_ + size_, s, n);
+        size_ += n;
+        return *this;
+    }
+    buffer& append(const char* b, const char* e) { return append(b, static_cast<std::size_t>(e - b)); }
+    buffer& append(std::string_view s) { return append(s.data(), s.size()); }
+    buffer& append(std::size_t n, char c) {
+        if (n > cap_ - size_) reserve(size_ + n);
+        std::memset(data_ + size_, c, n);
+        size_ += n;
+        return *this;
+    }
+    template <std::size_t N>
+    buffer& operator+=(const char (&s)[N]) {
+        return append(s, N - 1);
+    }
+    buffer& operator+=(std::string_view s) { return append(s); }
+    buffer& operator+=(char c) {
+        if (size_ == cap_) reserve(size_ + 1);
+        data_[size_++] = c;
+        return *this;
+    }
+    void insert(std::size_t pos, std::string_view s) {
+        append(s);
+        std::rotate(data_ + pos, data_ + size_ - s.size(), data_ + size_);
+    }
+    std::size_t size() const { return size_; }
+    bool empty() const { return size_ == 0; }
+    void clear() { size_ = 0; }
+    std::string_view view() const { return {data_, size_}; }
+    void reserve(std::size_t n) {
+        if (n <= cap_) return;
+        const std::size_t c = std::max(n, 2 * cap_);
+        char* d = new char[c];
+        if (size_) std::memcpy(d, data_, size_);
+        delete[] data_;
+        data_ = d;
+        cap_ = c;
+    }
+
+private:
+    char* data_ = nullptr;
+    std::size_t size_ = 0, cap_ = 0;
+};
 
 // An error (or a failed encode), as the protocol modules return it.
 struct outcome {
@@ -84,13 +141,13 @@ public:
     output& operator=(const output&) = delete;
 
     format_kind kind;
-    std::string buf;  // the records not yet written; formats append to it
+    buffer buf;  // the records not yet written; formats append to it
     // CSV: the table a message goes to (stdout: only --message's; with an
     // out_dir, a file <protocol>_<message>.csv each). Its header is written by
-    // header(std::string&) on first use. nullptr: the message is not written.
+    // header(buffer&) on first use. nullptr: the message is not written.
     std::string csv_message, out_dir;
     template <class Header>
-    std::string* csv_table(std::string_view protocol, std::string_view message, Header&& header) {
+    buffer* csv_table(std::string_view protocol, std::string_view message, Header&& header) {
         if (out_dir.empty()) {
             if (message != csv_message) return nullptr;
             if (!stdout_header_) {
@@ -101,9 +158,9 @@ public:
         }
         bool found = false;
         if (auto* t = find_table(protocol, message, found); found) return t;
-        std::string h;
+        buffer h;
         header(h);
-        return open_table(protocol, message, h);
+        return open_table(protocol, message, h.view());
     }
     // Ends a record: writes the buffer out when line buffered or full.
     void end_record() {
@@ -125,22 +182,27 @@ public:
 
 private:
     struct table;
-    std::string* find_table(std::string_view protocol, std::string_view message, bool& found);
-    std::string* open_table(std::string_view protocol, std::string_view message, const std::string& header);
+    buffer* find_table(std::string_view protocol, std::string_view message, bool& found);
+    buffer* open_table(std::string_view protocol, std::string_view message, std::string_view header);
     bool line_buffered_;
     bool stdout_header_ = false;
     std::vector<table*> tables_;
 };
 
 // Appenders shared by the formats.
+// (Out: buffer or std::string.)
 // A JSON string, escaped (invalid UTF-8 replaced by U+FFFD).
-void put_json_string(std::string& o, std::string_view s);
+template <class Out>
+void put_json_string(Out& o, std::string_view s);
 // A CSV cell, quoted when it holds a comma, quote or line end.
-void put_csv_cell(std::string& o, std::string_view s);
+template <class Out>
+void put_csv_cell(Out& o, std::string_view s);
 // {"type":"<type>","line":N,"time":...,"direction":...,"uuid":...,"handle":...  (no closing brace)
-void put_json_head(std::string& o, std::string_view type, const record_meta& meta);
+template <class Out>
+void put_json_head(Out& o, std::string_view type, const record_meta& meta);
 // "<time> line N (device to host): " (nothing without a line)
-void put_text_prefix(std::string& o, const record_meta& meta);
+template <class Out>
+void put_text_prefix(Out& o, const record_meta& meta);
 const char* direction_key(link_direction d);   // "host_to_device", "device_to_host", ""
 const char* direction_text(link_direction d);  // "host to device", "device to host", ""
 // At most `max` characters of s, with " ... (N characters)" when cut: values echoed in messages.

@@ -23,24 +23,24 @@ template <class F>
 using element_t = typename F::element_type;
 
 // ---------------------------------------------------------------- numbers
-inline void put_int(std::string& o, std::int64_t v) {
+inline void put_int(buffer& o, std::int64_t v) {
     char b[24];
     o.append(b, std::to_chars(b, b + sizeof b, v).ptr);
 }
 // printf's %.6g (text output)
-inline void put_g6(std::string& o, double v) {
+inline void put_g6(buffer& o, double v) {
     char b[48];
     o.append(b, std::to_chars(b, b + sizeof b, v, std::chars_format::general, 6).ptr);
 }
 // The shortest text that reads back as v (CSV); precision 15: rounded to 15 significant digits first.
-inline void put_shortest(std::string& o, double v, int precision = 17) {
+inline void put_shortest(buffer& o, double v, int precision = 17) {
     char b[48];
     o.append(b, precision == 15 ? std::to_chars(b, b + sizeof b, v, std::chars_format::general, 15).ptr
                                 : std::to_chars(b, b + sizeof b, v).ptr);
 }
 // A JSON number as nlohmann/json writes a double, ".0" after an integer. precision 15:
 // the shortest text of v rounded to 15 significant digits (what tidy(v) writes).
-inline void put_json_double(std::string& o, double v, int precision = 17) {
+inline void put_json_double(buffer& o, double v, int precision = 17) {
     if (!std::isfinite(v)) {
         o += "null";
         return;
@@ -93,7 +93,8 @@ std::span<const std::uint8_t> hex_bytes(const V& v) {
 }
 
 // "battery_voltage_raw" -> "battery_voltage", "centivolts" -> "centivolts_physical"
-inline void put_physical_key(std::string& o, std::string_view key) {
+template <class Out>
+void put_physical_key(Out& o, std::string_view key) {
     constexpr std::string_view raw = "_raw";
     if (key.size() > raw.size() && key.substr(key.size() - raw.size()) == raw) o.append(key.substr(0, key.size() - 4));
     else o.append(key).append("_physical");
@@ -119,7 +120,7 @@ bool payload_text(const M& m, std::string_view field, std::string& text) {
 // ---------------------------------------------------------------- text rows
 // A leaf's text: "80 (13 V)", "charging (0x03)", "109 = error | charging", "\"name\"".
 template <class M, class F, class E>
-void text_value(std::string& o, const F& f, const E& v) {
+void text_value(buffer& o, const F& f, const E& v) {
     if constexpr (std::is_same_v<E, bool>) {
         o += v ? "true" : "false";
     } else if constexpr (std::is_enum_v<E>) {
@@ -210,12 +211,12 @@ void for_each_row(const M& m, path_buf& p, Row& row) {
         p.push(f.name);
         auto element = [&](const auto& e) {
             if constexpr (F::kind == wire_kind::record) for_each_row(e, p, row);
-            else row(p.view(), [&](std::string& o) { text_value<M>(o, f, e); });
+            else row(p.view(), [&](buffer& o) { text_value<M>(o, f, e); });
         };
         auto value = [&](const auto& v) {
             if constexpr (F::is_array) {
                 if (is_hex_array(f)) {
-                    row(p.view(), [&](std::string& o) { o += hex_of(hex_bytes<F>(v)); });
+                    row(p.view(), [&](buffer& o) { o += hex_of(hex_bytes<F>(v)); });
                 } else {
                     for (std::size_t i = 0; i < v.size(); ++i) {
                         const std::size_t at = p.n;
@@ -231,7 +232,7 @@ void for_each_row(const M& m, path_buf& p, Row& row) {
         const auto& member = m.*(f.member);
         if constexpr (F::is_optional) {
             if (member) value(*member);
-            else row(p.view(), [](std::string& o) { o += "(absent)"; });
+            else row(p.view(), [](buffer& o) { o += "(absent)"; });
         } else {
             value(member);
         }
@@ -239,7 +240,7 @@ void for_each_row(const M& m, path_buf& p, Row& row) {
         if (payload_text(m, f.name, text)) {
             const std::size_t at = p.n;
             p.push(" (text)");
-            row(p.view(), [&](std::string& o) { o += text; });
+            row(p.view(), [&](buffer& o) { o += text; });
             p.n = at;
         }
         p.n = mark;
@@ -248,7 +249,7 @@ void for_each_row(const M& m, path_buf& p, Row& row) {
 
 // "protocol message" then one row per field, then the notes.
 template <class M>
-void write_text(std::string& o, std::string_view protocol, const M& m, const std::vector<std::string>& notes) {
+void write_text(buffer& o, std::string_view protocol, const M& m, const std::vector<std::string>& notes) {
     o.append(protocol).append(" ").append(robowire::table_v<M>.name).append("\n");
     std::size_t w = 0;
     {
@@ -268,10 +269,10 @@ void write_text(std::string& o, std::string_view protocol, const M& m, const std
 
 // ---------------------------------------------------------------- JSON
 template <class M, class F, class E>
-void json_value(std::string& o, const F& f, const E& v);
+void json_value(buffer& o, const F& f, const E& v);
 
 template <class M>
-void write_json_object(std::string& o, const M& m) {
+void write_json_object(buffer& o, const M& m) {
     o += '{';
     bool first = true;
     auto key = [&](auto&&... parts) {
@@ -364,7 +365,7 @@ void write_json_object(std::string& o, const M& m) {
 }
 
 template <class M, class F, class E>
-void json_value(std::string& o, const F& f, const E& v) {
+void json_value(buffer& o, const F& f, const E& v) {
     (void)f;
     if constexpr (F::kind == wire_kind::record) {
         write_json_object(o, v);
@@ -386,18 +387,14 @@ void json_value(std::string& o, const F& f, const E& v) {
 }
 
 // ---------------------------------------------------------------- CSV
-// A CSV header name: "pu_motors_0.position[deg]", "battery_voltage[V]"
-struct csv_path {
-    std::string s;
-};
+// CSV header names: "pu_motors_0.position[deg]", "battery_voltage[V]", "motor_current_5[A]"
 template <class M>
-void csv_header(std::string& o, std::string& prefix) {
+void csv_header(buffer& o, const std::string& prefix) {
     robowire::for_each_field<M>([&](const auto& f) {
         using F = std::remove_cvref_t<decltype(f)>;
         auto leaf = [&](const std::string& at) {
             if constexpr (F::kind == wire_kind::record) {
-                std::string inner = at + ".";
-                csv_header<element_t<F>>(o, inner);
+                csv_header<element_t<F>>(o, at + ".");
             } else {
                 o += ',';
                 std::string name;
@@ -431,7 +428,7 @@ void csv_header(std::string& o, std::string& prefix) {
 
 // One cell per leaf of m (m null: an absent optional block, empty cells).
 template <class M>
-void csv_cells(std::string& o, const M* m) {
+void csv_cells(buffer& o, const M* m) {
     robowire::for_each_field<M>([&](const auto& f) {
         using F = std::remove_cvref_t<decltype(f)>;
         using E = element_t<F>;
@@ -484,7 +481,7 @@ void csv_cells(std::string& o, const M* m) {
 template <class M>
 void message(output& out, const record_meta& meta, std::string_view protocol, const M& m,
              const std::vector<std::string>& notes) {
-    std::string& o = out.buf;
+    buffer& o = out.buf;
     switch (out.kind) {
     case format_kind::text:
         put_text_prefix(o, meta);
@@ -506,10 +503,9 @@ void message(output& out, const record_meta& meta, std::string_view protocol, co
         o += "}\n";
         break;
     case format_kind::csv: {
-        std::string* t = out.csv_table(protocol, robowire::table_v<M>.name, [](std::string& h) {
-            h = "time,line,direction";
-            std::string prefix;
-            csv_header<M>(h, prefix);
+        buffer* t = out.csv_table(protocol, robowire::table_v<M>.name, [](buffer& h) {
+            h += "time,line,direction";
+            csv_header<M>(h, std::string());
             h += '\n';
         });
         if (!t) return;

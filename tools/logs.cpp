@@ -538,8 +538,10 @@ private:
         const record_meta meta = meta_of(num, pl);
         std::string text;  // scan: errors among the messages on stdout; decode: on stderr only
         if (opt_.scan) {
+            record_meta at = meta;  // "<time> line N: error: ..."
+            at.dir = link_direction::unknown;
             std::string prefix;
-            put_text_prefix(prefix, meta);
+            put_text_prefix(prefix, at);
             text = prefix + "error: " + error + "\n";
             for (const auto& h : hints) text += prefix + "hint: " + h + "\n";
         }
@@ -627,10 +629,13 @@ private:
         }
         const record_meta meta = meta_of(num, pl);
         switch (out_.kind) {
-        case format_kind::text:
-            put_text_prefix(out_.buf, meta);
+        case format_kind::text: {
+            record_meta at = meta;  // "<time> line N: navbot reassembly: ..."
+            at.dir = link_direction::unknown;
+            put_text_prefix(out_.buf, at);
             out_.buf.append("navbot reassembly: ").append(note).append("\n");
             break;
+        }
         case format_kind::json:
             put_json_head(out_.buf, "reassembly", meta);
             out_.buf.append(j).append("}\n");

@@ -28,8 +28,9 @@ bool plain(std::string_view s) {
     return true;
 }
 
-void write_all(const std::string& s, FILE* f, std::string& error, const std::string& name) {
-    if (s.empty()) return;
+void write_all(const buffer& b, FILE* f, std::string& error, const std::string& name) {
+    const std::string_view s = b.view();
+    if (s.empty() || !f) return;
     if (std::fwrite(s.data(), 1, s.size(), f) != s.size() && error.empty())
         error = "cannot write " + name + ": " + std::strerror(errno);
 }
@@ -44,7 +45,8 @@ const output_format* find_output_format(std::string_view name) {
     return nullptr;
 }
 
-void put_json_string(std::string& o, std::string_view s) {
+template <class Out>
+void put_json_string(Out& o, std::string_view s) {
     if (plain(s)) {
         o.append("\"").append(s).append("\"");
         return;
@@ -53,7 +55,8 @@ void put_json_string(std::string& o, std::string_view s) {
     o += nlohmann::json(std::string(s)).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
-void put_csv_cell(std::string& o, std::string_view s) {
+template <class Out>
+void put_csv_cell(Out& o, std::string_view s) {
     if (s.find_first_of(",\"\r\n") == std::string_view::npos) {
         o.append(s);
         return;
@@ -81,7 +84,8 @@ const char* direction_text(link_direction d) {
     }
 }
 
-void put_json_head(std::string& o, std::string_view type, const record_meta& meta) {
+template <class Out>
+void put_json_head(Out& o, std::string_view type, const record_meta& meta) {
     o.append("{\"type\":\"").append(type).append("\"");
     if (meta.line) {
         o.append(",\"line\":").append(std::to_string(meta.line));
@@ -98,13 +102,23 @@ void put_json_head(std::string& o, std::string_view type, const record_meta& met
     }
 }
 
-void put_text_prefix(std::string& o, const record_meta& meta) {
+template <class Out>
+void put_text_prefix(Out& o, const record_meta& meta) {
     if (!meta.line) return;
     if (!meta.time.empty()) o.append(meta.time).append(" ");
     o.append("line ").append(std::to_string(meta.line));
     if (meta.dir != link_direction::unknown) o.append(" (").append(direction_text(meta.dir)).append(")");
     o += ": ";
 }
+
+#define ROBOWIRE_APPENDERS(Out)                                                  \
+    template void put_json_string<Out>(Out&, std::string_view);                  \
+    template void put_csv_cell<Out>(Out&, std::string_view);                     \
+    template void put_json_head<Out>(Out&, std::string_view, const record_meta&); \
+    template void put_text_prefix<Out>(Out&, const record_meta&);
+ROBOWIRE_APPENDERS(buffer)
+ROBOWIRE_APPENDERS(std::string)
+#undef ROBOWIRE_APPENDERS
 
 std::string shorten(std::string_view s, std::size_t max) {
     if (s.size() <= max) return std::string(s);
@@ -113,11 +127,12 @@ std::string shorten(std::string_view s, std::size_t max) {
 
 // ---- the buffer
 struct output::table {
-    std::string protocol, message, path, buf;
+    std::string protocol, message, path;
+    buffer buf;
     FILE* f = nullptr;
 };
 
-output::output(format_kind k, bool line_buffered) : kind(k), line_buffered_(line_buffered) { buf.reserve(1 << 17); }
+output::output(format_kind k, bool line_buffered) : kind(k), line_buffered_(line_buffered) { buf.reserve(3 << 16); }
 
 output::~output() {
     flush();
@@ -138,7 +153,7 @@ void output::flush() {
     std::fflush(stdout);
 }
 
-std::string* output::find_table(std::string_view protocol, std::string_view message, bool& found) {
+buffer* output::find_table(std::string_view protocol, std::string_view message, bool& found) {
     found = false;
     for (table* t : tables_) {
         if (t->message == message && t->protocol == protocol) {
@@ -153,7 +168,7 @@ std::string* output::find_table(std::string_view protocol, std::string_view mess
     return nullptr;
 }
 
-std::string* output::open_table(std::string_view protocol, std::string_view message, const std::string& header) {
+buffer* output::open_table(std::string_view protocol, std::string_view message, std::string_view header) {
     if (!csv_message.empty() && message != csv_message) return nullptr;
     auto t = std::make_unique<table>();
     t->protocol = protocol;
@@ -163,7 +178,7 @@ std::string* output::open_table(std::string_view protocol, std::string_view mess
     if (!t->f) {
         if (write_error.empty()) write_error = "cannot open " + t->path + ": " + std::strerror(errno);
     } else {
-        t->buf = header;
+        t->buf.append(header);
         files.push_back(t->path);
     }
     tables_.push_back(t.release());

@@ -401,7 +401,7 @@ check(rc == 1 and out == "" and "error: line 15: bad header byte at byte 0" in e
       f"navbot on a BuWizz3 log: the BuWizz3 characteristic's lines are skipped: {rc} {err!r}")
 # a log line given as the argument; a log with bare hex lines pasted in
 rc, out, err = run("decode", "buwizz3", f"I 10:12:09.700 Data written to {APP}, value: (0x) 32-32")
-check(rc == 0 and out.startswith("line 1 (host to device): buwizz3 set_data_period"), f"log line argument: {rc} {out!r} {err!r}")
+check(rc == 0 and out.startswith("10:12:09.700 line 1 (host to device): buwizz3 set_data_period"), f"log line argument: {rc} {out!r} {err!r}")
 mixed = f"I 13:40:29.880 Notification received from {APP}, value: (0x) AC\n30 7F 81 00 40 C0 01 21 3F\n32 32\n"
 rc, out, err = run("decode", "--file", "-", "--json", stdin=mixed.encode())
 check(rc == 2 and "line 2: which protocol?" in err, f"mixed log without protocol: {rc} {err!r}")
@@ -412,7 +412,7 @@ check(rc == 0 and [(d.get("line"), d.get("message")) for d in map(parse_json, ou
 other_log = "I 09:00:00.000 Connected to D4:37:A1:0C:55:2E\n" \
             "I 09:00:01.000 Data written to 0000ffe1-0000-1000-8000-00805f9b34fb, value: (0x) 32-32\n"
 rc, out, err = run("decode", "buwizz3", "--file", "-", stdin=other_log.encode())
-check(rc == 0 and out.startswith("line 2 (host to device): buwizz3 set_data_period"), f"unknown UUID, protocol given: {rc} {out!r} {err!r}")
+check(rc == 0 and out.startswith("09:00:01.000 line 2 (host to device): buwizz3 set_data_period"), f"unknown UUID, protocol given: {rc} {out!r} {err!r}")
 rc, out, err = run("decode", "--file", "-", stdin=other_log.encode())
 check(rc == 1 and "no frame in stdin: 2 lines" in err and "1 value of another characteristic: 0000ffe1-0000-1000-8000-00805f9b34fb" in err,
       f"unknown UUID, no protocol: {rc} {err!r}")
