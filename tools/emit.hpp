@@ -398,16 +398,17 @@ void csv_header(buffer& o, const std::string& prefix) {
             } else {
                 o += ',';
                 std::string name;
+                name = at;
                 if constexpr (has_physical<F>()) {
                     if (!f.unit.name.empty()) {
-                        put_physical_key(name, f.name);
-                        name = prefix + name + at.substr(prefix.size() + f.name.size());
+                        // the physical value: "battery_voltage_raw" -> "battery_voltage[V]"
+                        constexpr std::string_view raw = "_raw";
+                        const std::string_view n = f.name;
+                        if (n.size() > raw.size() && n.substr(n.size() - raw.size()) == raw)
+                            name = prefix + std::string(n.substr(0, n.size() - raw.size())) +
+                                   at.substr(prefix.size() + n.size());
                         name.append("[").append(f.unit.name).append("]");
-                    } else {
-                        name = at;
                     }
-                } else {
-                    name = at;
                 }
                 put_csv_cell(o, name);
             }

@@ -324,7 +324,8 @@ public:
             pl.reset();
             pl.kind = parsed_line::bad;
             pl.error = "line too long: " + std::to_string(length) + " bytes (at most " +
-                       std::to_string(input_stream::max_line) + "), skipped: " + shorten(text, 40);
+                       std::to_string(input_stream::max_line) + "), skipped; it starts " +
+                       std::string(text.substr(0, 32)) + "...";
             pl.source = "";
         } else if (const std::string c = control_byte(text); !c.empty()) {
             pl.reset();
