@@ -271,6 +271,33 @@ void write_text(buffer& o, std::string_view protocol, const M& m, const std::vec
 template <class M, class F, class E>
 void json_value(buffer& o, const F& f, const E& v);
 
+// A flag field's bits as JSON members: ,"flags_bits":{"error":true,...} (nothing for other fields).
+template <class M, class F>
+void put_json_bits(buffer& o, const F& f, unsigned raw) {
+    if constexpr (robowire::has_flag_bits<M>) {
+        bool any = false;
+        for (const auto& b : robowire::flag_bits_v<M>) {
+            if (b.field != f.name) continue;
+            o += any ? "," : ",\"";
+            if (!any) o.append(f.name).append("_bits\":{");
+            any = true;
+            const unsigned value_bits = (raw >> b.lo) & ((1u << b.width) - 1u);
+            o.append("\"").append(b.name).append("\":");
+            if (b.width == 1) {
+                o += value_bits ? "true" : "false";
+            } else {
+                o += '"';
+                if (value_bits < b.values.size() && !b.values[value_bits].empty()) o.append(b.values[value_bits]);
+                else put_int(o, value_bits);
+                o += '"';
+            }
+        }
+        if (any) o += '}';
+    } else {
+        (void)o, (void)f, (void)raw;
+    }
+}
+
 template <class M>
 void write_json_object(buffer& o, const M& m) {
     o += '{';
@@ -332,27 +359,7 @@ void write_json_object(buffer& o, const M& m) {
                 put_json_string(o, f.unit.name);
                 o += '}';
             }
-            if constexpr (robowire::has_flag_bits<M> && !F::is_array) {
-                const auto raw = static_cast<unsigned>(v);
-                bool any = false;
-                for (const auto& b : robowire::flag_bits_v<M>) {
-                    if (b.field != f.name) continue;
-                    o += any ? "," : ",\"";
-                    if (!any) o.append(f.name).append("_bits\":{");
-                    any = true;
-                    const unsigned value_bits = (raw >> b.lo) & ((1u << b.width) - 1u);
-                    o.append("\"").append(b.name).append("\":");
-                    if (b.width == 1) {
-                        o += value_bits ? "true" : "false";
-                    } else {
-                        o += '"';
-                        if (value_bits < b.values.size() && !b.values[value_bits].empty()) o.append(b.values[value_bits]);
-                        else put_int(o, value_bits);
-                        o += '"';
-                    }
-                }
-                if (any) o += '}';
-            }
+            if constexpr (!F::is_array) put_json_bits<M>(o, f, static_cast<unsigned>(v));
         }
         (void)sizeof(E);
         thread_local std::string text;
