@@ -295,8 +295,8 @@ struct time_point {
 std::optional<time_point> parse_time_point(std::string_view s);
 struct log_options {
     direction forced = direction::any;
-    bool scan = false;                          // scan: errors on stdout too, NAVBOT reassembly, counters last
-    std::optional<time_point> since, until;     // only frames logged in [since, until]
+    bool scan = false;                       // scan: errors on stdout too, NAVBOT reassembly, counters last
+    std::optional<time_point> since, until;  // only frames logged in [since, until]
 };
 // Decodes every line of `in` that holds a frame as it is read, with `p`
 // (nullptr: the characteristic UUID of each line picks the protocol). decode:

@@ -337,7 +337,8 @@ void write_json_object(buffer& o, const M& m) {
         const auto& v = [&]() -> const auto& {
             if constexpr (F::is_optional) return *member;
             else return member;
-        }();
+        }
+        ();
         value(v);
         if constexpr (has_physical<F>()) {
             if (!f.unit.name.empty()) {
@@ -470,7 +471,8 @@ void csv_cells(buffer& o, const M* m) {
             } else {
                 return m ? &(m->*(f.member)) : static_cast<const T*>(nullptr);
             }
-        }();
+        }
+        ();
         if constexpr (F::is_array) {
             if (is_hex_array(f)) {
                 o += ',';

@@ -189,8 +189,7 @@ bool looks_like_hex_lines(std::span<const std::uint8_t> first) {
 }
 
 std::string control_byte(std::string_view line) {
-    if (std::none_of(line.begin(), line.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20; }))
-        return {};
+    if (std::none_of(line.begin(), line.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20; })) return {};
     for (std::size_t i = 0; i < line.size(); ++i) {
         const auto c = static_cast<unsigned char>(line[i]);
         if (c < 0x20 && c != '\t') {

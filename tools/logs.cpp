@@ -62,7 +62,8 @@ long date_of(std::string_view s) {
         for (std::size_t j = i; j < i + k; ++j) v = v * 10 + (s[j] - '0');
         return v;
     };
-    const std::chrono::year_month_day ymd{std::chrono::year(n(0, 4)), std::chrono::month(static_cast<unsigned>(n(5, 2))),
+    const std::chrono::year_month_day ymd{std::chrono::year(n(0, 4)),
+                                          std::chrono::month(static_cast<unsigned>(n(5, 2))),
                                           std::chrono::day(static_cast<unsigned>(n(8, 2)))};
     if (!ymd.ok()) return -1;
     return static_cast<long>(std::chrono::sys_days(ymd).time_since_epoch().count());
@@ -96,16 +97,16 @@ void put_iso(std::string& o, long day, long ms) {
 
 struct parsed_line {
     enum kind_t { none, frame, bad } kind = none;
-    bool log = false;             // an nRF Connect line (with or without a frame)
-    const char* source = "";      // "nRF Connect (Android)", "nRF Connect (desktop)", "hex"
+    bool log = false;         // an nRF Connect line (with or without a frame)
+    const char* source = "";  // "nRF Connect (Android)", "nRF Connect (desktop)", "hex"
     byte_vector bytes;
     link_direction dir = link_direction::unknown;
     std::string uuid;    // Android: the characteristic
     std::string handle;  // desktop: the attribute handle
     bool desktop_changed = false, desktop_written = false;
     std::string error;
-    long tod = -1;   // time of day (ms), -1: none
-    long day = -1;   // the line's own date (desktop log file), -1: none
+    long tod = -1;         // time of day (ms), -1: none
+    long day = -1;         // the line's own date (desktop log file), -1: none
     long header_day = -1;  // "nRF Connect, 2026-03-14": the date of the lines that follow
     void reset() {
         kind = none;
@@ -365,15 +366,16 @@ public:
             for (const auto& u : other_uuids_) others += (others.empty() ? ": " : ", ") + u;
             const std::size_t n = c_.lines;
             const std::string why =
-                "no frame in " + name_ + ": " + (n == 0 ? std::string("it is empty") : std::to_string(n) + (n == 1 ? " line" : " lines")) +
-                (n == 0 ? "" : " (read as " + source() +
-                                   (c_.other ? "; " + std::to_string(c_.other) +
-                                                   (c_.other == 1 ? " value of another characteristic"
-                                                                  : " values of other characteristics") +
-                                                   others
-                                             : "") +
-                                   (c_.outside ? "; " + std::to_string(c_.outside) + " outside the time range" : "") +
-                                   ")");
+                "no frame in " + name_ + ": " +
+                (n == 0 ? std::string("it is empty") : std::to_string(n) + (n == 1 ? " line" : " lines")) +
+                (n == 0 ? ""
+                        : " (read as " + source() +
+                              (c_.other ? "; " + std::to_string(c_.other) +
+                                              (c_.other == 1 ? " value of another characteristic"
+                                                             : " values of other characteristics") +
+                                              others
+                                        : "") +
+                              (c_.outside ? "; " + std::to_string(c_.outside) + " outside the time range" : "") + ")");
             out_.error({}, why, "");
             err_line("error: " + why);
             return exit_bad_input;

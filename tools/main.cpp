@@ -51,8 +51,9 @@ struct format_option {
         auto o = std::make_unique<output>(kind(), line_buffered || ::isatty(1));
         if (o->kind == format_kind::csv) {
             if (message.empty() && out_dir.empty()) {
-                err_line("error: --format csv writes one table per message: give --message NAME (robowire list) or "
-                         "--out-dir DIR");
+                err_line(
+                    "error: --format csv writes one table per message: give --message NAME (robowire list) or "
+                    "--out-dir DIR");
                 return nullptr;
             }
             o->csv_message = message;
@@ -125,7 +126,8 @@ direction direction_of(const std::string& name) {
 }
 // --since / --until into `opt`; false after a usage error (reported).
 bool time_range(const std::string& since, const std::string& until, log_options& opt) {
-    for (const auto& [text, slot, name] : {std::tuple{&since, &opt.since, "--since"}, {&until, &opt.until, "--until"}}) {
+    for (const auto& [text, slot, name] :
+         {std::tuple{&since, &opt.since, "--since"}, {&until, &opt.until, "--until"}}) {
         if (text->empty()) continue;
         *slot = parse_time_point(*text);
         if (!*slot) {
@@ -176,7 +178,8 @@ int run_decode(const decode_options& opt) {
             return exit_bad_input;
         }
         if (bytes.size() > (1u << 16)) {
-            err_line("error: " + in.name + " read as binary holds one frame, and it is longer than 65536 bytes "
+            err_line("error: " + in.name +
+                     " read as binary holds one frame, and it is longer than 65536 bytes "
                      "(use --hex for a hex dump)");
             return exit_bad_input;
         }
@@ -304,7 +307,8 @@ int run_scan(const std::string& path, output& out, input_mode mode) {
     const bool empty = first.empty() && in.error.empty();
     const bool hex = mode == input_mode::hex || (mode == input_mode::detect && looks_like_hex_lines(first));
     const char* kind = empty ? "empty" : hex ? "hex text" : "binary";
-    err_line(std::string("scan: reading ") + in.name + " as " + kind + (hex || empty ? "" : " (use --hex for a hex dump)"));
+    err_line(std::string("scan: reading ") + in.name + " as " + kind +
+             (hex || empty ? "" : " (use --hex for a hex dump)"));
     std::size_t bad = 0;
     in.flush_before_wait = &out;
     if (hex) {
@@ -330,7 +334,8 @@ int run_scan(const std::string& path, output& out, input_mode mode) {
             meta.line = p.line;
             std::string prefix;
             put_text_prefix(prefix, meta);
-            if (!out.error(meta, why, prefix + "error: " + why + "\n")) err_line("error: line " + std::to_string(p.line) + ": " + why);
+            if (!out.error(meta, why, prefix + "error: " + why + "\n"))
+                err_line("error: line " + std::to_string(p.line) + ": " + why);
         }
     } else {
         for (auto b = in.read(); !b.empty(); b = in.read()) p.feed(b);
@@ -396,8 +401,7 @@ int run_monitor(const monitor_options& opt) {
         if (n > 0) {
             p.feed(std::span(buf, static_cast<std::size_t>(n)));
             out->flush();  // live: what a read brought is written at once
-        }
-        else if (n == 0 || (errno != EAGAIN && errno != EINTR)) break;
+        } else if (n == 0 || (errno != EAGAIN && errno != EINTR)) break;
     }
     ::close(fd);
     p.counters(nullptr);

@@ -111,9 +111,9 @@ void put_text_prefix(Out& o, const record_meta& meta) {
     o += ": ";
 }
 
-#define ROBOWIRE_APPENDERS(Out)                                                  \
-    template void put_json_string<Out>(Out&, std::string_view);                  \
-    template void put_csv_cell<Out>(Out&, std::string_view);                     \
+#define ROBOWIRE_APPENDERS(Out)                                                   \
+    template void put_json_string<Out>(Out&, std::string_view);                   \
+    template void put_csv_cell<Out>(Out&, std::string_view);                      \
     template void put_json_head<Out>(Out&, std::string_view, const record_meta&); \
     template void put_text_prefix<Out>(Out&, const record_meta&);
 ROBOWIRE_APPENDERS(buffer)
