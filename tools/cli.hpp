@@ -56,7 +56,21 @@ public:
     buffer& operator=(const buffer&) = delete;
     buffer& append(const char* s, std::size_t n) {
         if (n > cap_ - size_) reserve(size_ + n);
-        if (n) std::memcpy(data_ + size_, s, n);
+        char* d = data_ + size_;
+        // short pieces (most of them) with fixed-size copies, overlapping, rather than a call to memcpy
+        if (n >= 8 && n <= 16) {
+            copy<8>(d, s);
+            copy<8>(d + n - 8, s + n - 8);
+        } else if (n >= 4 && n < 8) {
+            copy<4>(d, s);
+            copy<4>(d + n - 4, s + n - 4);
+        } else if (n > 0 && n < 4) {
+            d[0] = s[0];
+            d[n / 2] = s[n / 2];
+            d[n - 1] = s[n - 1];
+        } else if (n) {
+            std::memcpy(d, s, n);
+        }
         size_ += n;
         return *this;
     }
@@ -97,6 +111,12 @@ public:
     }
 
 private:
+    template <std::size_t N>
+    static void copy(char* d, const char* s) {
+        char t[N];
+        std::memcpy(t, s, N);
+        std::memcpy(d, t, N);
+    }
     char* data_ = nullptr;
     std::size_t size_ = 0, cap_ = 0;
 };

@@ -27,16 +27,113 @@ inline void put_int(buffer& o, std::int64_t v) {
     char b[24];
     o.append(b, std::to_chars(b, b + sizeof b, v).ptr);
 }
-// printf's %.6g (text output)
-inline void put_g6(buffer& o, double v) {
+// ---- printf's %.<p>g, fast: from the shortest round-trip digits of the
+// double (std::to_chars, Ryu), rounded in decimal. When the first digit
+// dropped is 4 or 5 the shortest digits are too close to halfway to decide
+// and std::to_chars with the precision (exact, about ten times slower) does it.
+struct decimal {
+    char d[24];
+    int n = 0;  // digits d[0..n): d[0].d[1]d[2]... x 10^exp
+    int exp = 0;
+    bool neg = false;
+};
+inline decimal shortest_decimal(double v) {
     char b[48];
-    o.append(b, std::to_chars(b, b + sizeof b, v, std::chars_format::general, 6).ptr);
+    const char* e = std::to_chars(b, b + sizeof b, v, std::chars_format::scientific).ptr;
+    decimal x;
+    const char* p = b;
+    if (*p == '-') x.neg = true, ++p;
+    for (; p < e && *p != 'e'; ++p)
+        if (*p != '.') x.d[x.n++] = *p;
+    ++p;  // 'e'
+    const bool neg_exp = *p == '-';
+    ++p;
+    for (; p < e; ++p) x.exp = x.exp * 10 + (*p - '0');
+    if (neg_exp) x.exp = -x.exp;
+    return x;
 }
+// Rounds x to p significant digits and drops trailing zeros; false when the decimal digits cannot decide.
+inline bool round_digits(decimal& x, int p) {
+    if (x.n > p) {
+        const char first = x.d[p];
+        if (first == '4' || first == '5') return false;
+        x.n = p;
+        if (first > '5') {
+            int i = p - 1;
+            while (i >= 0 && x.d[i] == '9') x.d[i--] = '0';
+            if (i < 0) {
+                x.d[0] = '1';
+                ++x.exp;
+            } else {
+                ++x.d[i];
+            }
+        }
+    }
+    while (x.n > 1 && x.d[x.n - 1] == '0') --x.n;
+    return true;
+}
+// x (rounded to at most p digits) as printf's %.<p>g writes it.
+inline void put_g(buffer& o, const decimal& x, int p) {
+    if (x.neg) o += '-';
+    if (x.exp < -4 || x.exp >= p) {
+        o += x.d[0];
+        if (x.n > 1) o.append(".").append(x.d + 1, static_cast<std::size_t>(x.n - 1));
+        char b[8];
+        int e = x.exp < 0 ? -x.exp : x.exp;
+        int k = 0;
+        do {
+            b[k++] = static_cast<char>('0' + e % 10);
+            e /= 10;
+        } while (e);
+        if (k < 2) b[k++] = '0';
+        o += 'e';
+        o += x.exp < 0 ? '-' : '+';
+        while (k) o += b[--k];
+    } else if (x.exp >= 0) {
+        const auto whole = static_cast<std::size_t>(x.exp + 1);
+        const auto n = static_cast<std::size_t>(x.n);
+        o.append(x.d, std::min(n, whole));
+        if (n < whole) o.append(whole - n, '0');
+        else if (n > whole) o.append(".").append(x.d + whole, n - whole);
+    } else {
+        o.append("0.").append(static_cast<std::size_t>(-x.exp - 1), '0').append(x.d, static_cast<std::size_t>(x.n));
+    }
+}
+inline void put_g_exact(buffer& o, double v, int p) {
+    char b[48];
+    o.append(b, std::to_chars(b, b + sizeof b, v, std::chars_format::general, p).ptr);
+}
+// printf's %.<p>g of v.
+inline void put_g(buffer& o, double v, int p) {
+    // whole numbers (most physical values of scale 1) as integers
+    if (std::fabs(v) < 1e15 && v == std::trunc(v) && !(v == 0.0 && std::signbit(v)) && (p >= 15 || std::fabs(v) < 1e6))
+        return put_int(o, static_cast<std::int64_t>(v));
+    if (!std::isnormal(v) && v != 0.0) return put_g_exact(o, v, p);  // subnormals have fewer digits
+    decimal x = shortest_decimal(v);
+    if (round_digits(x, p)) put_g(o, x, p);
+    else put_g_exact(o, v, p);
+}
+// %.<p2>g of v rounded to 15 significant digits first (tidy(v): 13.000000000000002 -> 13).
+inline void put_g_tidy(buffer& o, double v, int p2) {
+    if (std::fabs(v) < 1e6 && v == std::trunc(v) && !(v == 0.0 && std::signbit(v)))
+        return put_int(o, static_cast<std::int64_t>(v));
+    if (std::isnormal(v) || v == 0.0) {
+        decimal x = shortest_decimal(v);
+        if (round_digits(x, 15) && round_digits(x, p2)) return put_g(o, x, p2);
+    }
+    char b[48];
+    char* e = std::to_chars(b, b + sizeof b, v, std::chars_format::general, 15).ptr;
+    double t = v;
+    std::from_chars(b, e, t);
+    put_g_exact(o, t, p2);
+}
+// printf's %.6g (text output)
+inline void put_g6(buffer& o, double v) { put_g(o, v, 6); }
 // The shortest text that reads back as v (CSV); precision 15: rounded to 15 significant digits first.
 inline void put_shortest(buffer& o, double v, int precision = 17) {
+    if (precision == 15) return put_g(o, v, 15);
     char b[48];
-    o.append(b, precision == 15 ? std::to_chars(b, b + sizeof b, v, std::chars_format::general, 15).ptr
-                                : std::to_chars(b, b + sizeof b, v).ptr);
+    o.append(b, std::to_chars(b, b + sizeof b, v).ptr);
 }
 // A JSON number as nlohmann/json writes a double, ".0" after an integer. precision 15:
 // the shortest text of v rounded to 15 significant digits (what tidy(v) writes).
@@ -45,11 +142,15 @@ inline void put_json_double(buffer& o, double v, int precision = 17) {
         o += "null";
         return;
     }
-    char b[48];
-    char* e = precision == 15 ? std::to_chars(b, b + sizeof b, v, std::chars_format::general, 15).ptr
-                              : std::to_chars(b, b + sizeof b, v).ptr;
-    o.append(b, e);
-    if (std::find_if(b, e, [](char c) { return c == '.' || c == 'e'; }) == e) o += ".0";
+    const std::size_t start = o.size();
+    if (precision == 15) {
+        put_g(o, v, 15);
+    } else {
+        char b[48];
+        o.append(b, std::to_chars(b, b + sizeof b, v).ptr);
+    }
+    const std::string_view w = o.view().substr(start);
+    if (w.find_first_of(".e") == std::string_view::npos) o += ".0";
 }
 // Rounded to 15 significant digits (13.000000000000002 -> 13): physical values.
 inline double tidy(double v) {
@@ -60,8 +161,6 @@ inline double tidy(double v) {
     return r;
 }
 
-// A physical value (raw x scale + offset), rounded to 15 significant digits by tidy (text),
-// or not (JSON and CSV: their writers round it with precision 15, which gives the same text).
 template <class F>
 double physical_untidy(const F& f, std::int64_t raw) {
     return static_cast<double>(raw) * f.unit.scale + f.unit.offset;
@@ -133,7 +232,7 @@ void text_value(buffer& o, const F& f, const E& v) {
         if (!f.unit.name.empty()) {
             if (f.unit.scale != 1.0 || f.unit.offset != 0.0) {
                 o += " (";
-                put_g6(o, physical(f, i));
+                put_g_tidy(o, physical_untidy(f, i), 6);
                 o.append(" ").append(f.unit.name).append(")");
             } else {
                 o.append(" ").append(f.unit.name);
