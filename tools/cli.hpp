@@ -54,7 +54,7 @@ public:
     ~buffer() { delete[] data_; }
     buffer(const buffer&) = delete;
     buffer& operator=(const buffer&) = delete;
-    buffer& append(const char* s, std::size_t n) {
+    [[gnu::always_inline]] buffer& append(const char* s, std::size_t n) {
         if (n > cap_ - size_) reserve(size_ + n);
         char* d = data_ + size_;
         // short pieces (most of them) with fixed-size copies, overlapping, rather than a call to memcpy
