@@ -1,6 +1,7 @@
 // BuWizz3: commands (host -> device) and notifications (device -> host), from
 // buwizz3::command and buwizz3::notification.
 #include "describe.hpp"
+#include "emit.hpp"
 
 namespace robowire::cli {
 namespace {
@@ -21,43 +22,57 @@ std::optional<std::pair<std::string, std::string>> by_command(std::uint8_t cmd, 
     return found;
 }
 
-outcome decode_as(std::span<const std::uint8_t> in, direction d) {
+const std::vector<std::string> no_notes;
+
+outcome decode_as(std::span<const std::uint8_t> in, direction d, output& out, const record_meta& meta) {
     if (d == direction::command) {
         const auto r = bw::decode_command(in);
-        return r ? outcome_of(*r) : failure(exit_bad_input, describe_decode_error<bw::command>(in, r.error()));
+        if (!r) return failure(exit_bad_input, describe_decode_error<bw::command>(in, r.error()));
+        emit::variant_message(out, meta, "buwizz3", *r, no_notes);
+        return {};
     }
     const auto r = bw::decode_notification(in);
-    return r ? outcome_of(*r) : failure(exit_bad_input, describe_decode_error<bw::notification>(in, r.error()));
+    if (!r) return failure(exit_bad_input, describe_decode_error<bw::notification>(in, r.error()));
+    emit::variant_message(out, meta, "buwizz3", *r, no_notes);
+    return {};
 }
 
-outcome decode(std::span<const std::uint8_t> in, direction d) {
-    if (in.empty()) return decode_as(in, direction::command);
+outcome decode(std::span<const std::uint8_t> in, direction d, output& out, const record_meta& meta) {
+    if (in.empty()) return decode_as(in, direction::command, out, meta);
+    // the common case first: a notification or command whose byte 0 only one direction uses
+    if (d == direction::notification) {
+        const auto r = bw::decode_notification(in);
+        if (r) {
+            emit::variant_message(out, meta, "buwizz3", *r, no_notes);
+            return {};
+        }
+    }
     bool cmd_fits = false, note_fits = false;
     const auto c = by_command<bw::command>(in[0], in.size(), cmd_fits);
     const auto n = by_command<bw::notification>(in[0], in.size(), note_fits);
     if (d != direction::any) {
-        outcome o = decode_as(in, d);
+        outcome o = decode_as(in, d, out, meta);
         if (d == direction::command && !c && n)
             o.error += " (" + hex2(in[0]) + " is the notification " + n->first + ")";
         if (d == direction::notification && !n && c)
             o.error += " (" + hex2(in[0]) + " is the command " + c->first + ")";
         return o;
     }
-    if (c && !n) return decode_as(in, direction::command);
-    if (n && !c) return decode_as(in, direction::notification);
+    if (c && !n) return decode_as(in, direction::command, out, meta);
+    if (n && !c) return decode_as(in, direction::notification, out, meta);
     if (!c && !n) {
         return failure(exit_bad_input, "unknown message at byte 0: " + hex2(in[0]) +
                                            " is no BuWizz3 command or notification (robowire list buwizz3)");
     }
     // both directions use this command byte: the length decides
-    if (cmd_fits && !note_fits) return decode_as(in, direction::command);
-    if (note_fits && !cmd_fits) return decode_as(in, direction::notification);
+    if (cmd_fits && !note_fits) return decode_as(in, direction::command, out, meta);
+    if (note_fits && !cmd_fits) return decode_as(in, direction::notification, out, meta);
     const std::string which = hex2(in[0]) + " is the command " + c->first + " (" + c->second +
                               ") and the notification " + n->first + " (" + n->second + "); " +
                               plural(in.size(), "byte", "bytes") + " given";
     if (cmd_fits && note_fits)
         return failure(exit_usage, which + ": add --direction command or --direction notification");
-    outcome o = decode_as(in, direction::command);
+    outcome o = decode_as(in, direction::command, out, meta);
     o.error += " (" + which + ")";
     return o;
 }

@@ -7,7 +7,7 @@ outcome buwizz3_encode(std::string_view message, const std::vector<std::pair<std
     namespace bw = robowire::buwizz3;
     if (auto o = encode_in<bw::command>(message, values)) return *o;
     if (auto o = encode_in<bw::notification>(message, values)) return *o;
-    return failure(exit_usage, "unknown message " + std::string(message) + " (robowire list buwizz3)");
+    return failure(exit_usage, "unknown message " + shorten(message) + " (robowire list buwizz3)");
 }
 
 }  // namespace robowire::cli

@@ -1,5 +1,5 @@
-// Templates over the library's tables: a message as a node tree, its `list`
-// entry, the field at a byte offset, and encoding from name=value pairs.
+// Templates over the library's tables: a message's `list` entry, the field at
+// a byte offset, and encoding from name=value pairs (emit.hpp writes messages).
 // Included by the protocol modules only (buwizz3.cpp, navbot.cpp, osp.cpp).
 #pragma once
 
@@ -241,114 +241,6 @@ std::string describe_decode_error(std::span<const std::uint8_t> in, const robowi
     return s;
 }
 
-// ---------------------------------------------------------------- a message as a node tree
-template <class M>
-node tree_of(const M& m);
-
-template <class M, class F, class E>
-node element_node(const F& f, const E& v) {
-    node n;
-    if constexpr (F::kind == wire_kind::record) {
-        n = tree_of(v);
-    } else if constexpr (std::is_same_v<E, bool>) {
-        n.kind = node::boolean;
-        n.b = v;
-        n.text = v ? "true" : "false";
-    } else if constexpr (std::is_enum_v<E>) {
-        n.kind = node::string;
-        n.s = std::string(robowire::enum_name(v));
-        n.text = n.s + " (" + hex2(static_cast<unsigned>(v)) + ")";
-    } else if constexpr (std::is_same_v<E, float>) {
-        if (std::isfinite(v)) {
-            n.kind = node::real;
-            n.d = static_cast<double>(v);
-        }
-        n.text = number(static_cast<double>(v));
-    } else if constexpr (std::is_integral_v<E>) {
-        n.kind = node::integer;
-        n.i = static_cast<std::int64_t>(v);
-        n.text = std::to_string(n.i);
-        if (!f.unit.name.empty()) {
-            n.phys = tidy(static_cast<double>(n.i) * f.unit.scale + f.unit.offset);
-            n.unit = std::string(f.unit.name);
-            if (f.unit.scale != 1.0 || f.unit.offset != 0.0) n.text += " (" + number(*n.phys) + " " + n.unit + ")";
-            else n.text += " " + n.unit;
-        }
-        if constexpr (robowire::has_flag_bits<M>) {
-            std::string names;
-            const auto raw = static_cast<unsigned>(n.i);
-            unsigned known = 0;
-            for (const auto& b : robowire::flag_bits_v<M>) {
-                if (b.field != f.name) continue;
-                const unsigned mask = ((1u << b.width) - 1u) << b.lo;
-                known |= mask;
-                const unsigned value = (raw & mask) >> b.lo;
-                std::string shown;
-                if (b.width == 1) {
-                    n.bits.emplace_back(std::string(b.name), value ? "true" : "false");
-                    if (value) shown = std::string(b.name);
-                } else {
-                    const std::string vn = value < b.values.size() && !b.values[value].empty()
-                                               ? std::string(b.values[value])
-                                               : std::to_string(value);
-                    n.bits.emplace_back(std::string(b.name), vn);
-                    shown = std::string(b.name) + " " + vn;
-                }
-                if (!shown.empty()) names += (names.empty() ? "" : " | ") + shown;
-            }
-            if (!n.bits.empty()) {
-                for (unsigned bit = 0; bit < 8; ++bit)
-                    if ((raw & ~known) & (1u << bit)) names += (names.empty() ? "bit" : " | bit") + std::to_string(bit);
-                n.text += " = " + (names.empty() ? std::string("(none)") : names);
-            }
-        }
-    } else if constexpr (requires { v.view(); }) {
-        n.kind = node::string;
-        n.s = std::string(v.view());
-        n.text = "\"" + n.s + "\"";
-    } else {
-        n.kind = node::string;
-        n.s = hex_of(v.span());
-        n.text = v.empty() ? "(none)" : n.s;
-    }
-    return n;
-}
-
-template <class M>
-node tree_of(const M& m) {
-    node obj;
-    obj.kind = node::object;
-    robowire::for_each_field<M>([&](const auto& f) {
-        using F = std::remove_cvref_t<decltype(f)>;
-        using E = element_of_t<F>;
-        const auto& member = m.*(f.member);
-        auto value_node = [&](const auto& value) {
-            if constexpr (F::is_array) {
-                node arr;
-                arr.kind = node::array;
-                for (const auto& e : value) arr.children.push_back(element_node<M>(f, e));
-                // long byte arrays without meaning per byte (a payload): one hex line in text output
-                if constexpr (F::kind == wire_kind::u8 && std::is_same_v<E, std::uint8_t> && F::count >= 8) {
-                    if (f.unit.name.empty())
-                        arr.text = hex_of(std::span<const std::uint8_t>(value.data(), value.size()));
-                }
-                return arr;
-            } else {
-                return element_node<M>(f, value);
-            }
-        };
-        node n;
-        if constexpr (F::is_optional) {
-            if (member) n = value_node(*member);
-        } else {
-            n = value_node(member);
-        }
-        n.key = std::string(f.name);
-        obj.children.push_back(std::move(n));
-    });
-    return obj;
-}
-
 // ---------------------------------------------------------------- list
 template <class M>
 std::string key_bytes() {
@@ -475,8 +367,8 @@ bool parse_element(const F& f, E& v, value_reader& r, std::size_t byte, const st
     } else {
         const std::string& t = r.tokens[r.pos++];
         auto bad = [&](std::string_view why) {
-            r.error = std::string(why) + " at byte " + std::to_string(byte) + ": " + path + "=" + t + ", valid " +
-                      valid_of(f);
+            r.error = std::string(why) + " at byte " + std::to_string(byte) + ": " + path + "=" + shorten(t) +
+                      ", valid " + valid_of(f);
             return false;
         };
         if constexpr (std::is_same_v<E, bool>) {
@@ -559,15 +451,15 @@ outcome encode_as(const std::vector<std::pair<std::string, std::string>>& values
             robowire::for_each_field<M>(
                 [&](const auto& f) { names += (names.empty() ? "" : ", ") + std::string(f.name); });
             o.status = exit_usage;
-            o.error = "unknown field " + values[i].first + " of " + mname +
+            o.error = "unknown field " + shorten(values[i].first) + " of " + mname +
                       " (fields: " + (names.empty() ? "none" : names) + ")";
             return o;
         }
         for (std::size_t j = 0; j < i; ++j) {
             if (values[j].first == values[i].first) {
                 o.status = exit_usage;
-                o.error = "field " + values[i].first + " given twice (" + values[j].first + "=" + values[j].second +
-                          ", " + values[i].first + "=" + values[i].second + ")";
+                o.error = "field " + values[i].first + " given twice (" + values[j].first + "=" +
+                          shorten(values[j].second) + ", " + values[i].first + "=" + shorten(values[i].second) + ")";
                 return o;
             }
         }
@@ -623,20 +515,6 @@ std::optional<outcome> encode_in(std::string_view name,
         using M = typename decltype(t)::type;
         if (!o && robowire::table_v<M>.name == name) o = encode_as<M>(values);
     });
-    return o;
-}
-
-// A decoded variant as an outcome.
-template <class V>
-outcome outcome_of(const V& v) {
-    outcome o;
-    std::visit(
-        [&](const auto& m) {
-            using M = std::remove_cvref_t<decltype(m)>;
-            o.message = std::string(robowire::table_v<M>.name);
-            o.fields = tree_of(m);
-        },
-        v);
     return o;
 }
 

@@ -1,34 +1,28 @@
 // Hex text as users paste it, and hex/binary detection.
+#include <array>
 #include <cstdio>
 
 #include "cli.hpp"
 
 namespace robowire::cli {
 namespace {
-bool is_separator(char c) {
-    switch (c) {
-    case ' ':
-    case '\t':
-    case '\n':
-    case '\r':
-    case '\f':
-    case '\v':
-    case '-':
-    case ':':
-    case ',':
-    case ';':
-    case '{':
-    case '}':
-    case '[':
-    case ']': return true;
-    default: return false;
+// Per byte: 0-15 a hex digit's value, 16 a separator, 17 anything else.
+constexpr std::array<std::uint8_t, 256> classes = [] {
+    std::array<std::uint8_t, 256> t{};
+    for (auto& c : t) c = 17;
+    for (int i = 0; i < 10; ++i) t[static_cast<std::size_t>('0' + i)] = static_cast<std::uint8_t>(i);
+    for (int i = 0; i < 6; ++i) {
+        t[static_cast<std::size_t>('a' + i)] = static_cast<std::uint8_t>(10 + i);
+        t[static_cast<std::size_t>('A' + i)] = static_cast<std::uint8_t>(10 + i);
     }
-}
+    for (const char c : {' ', '\t', '\n', '\r', '\f', '\v', '-', ':', ',', ';', '{', '}', '[', ']'})
+        t[static_cast<unsigned char>(c)] = 16;
+    return t;
+}();
+bool is_separator(char c) { return classes[static_cast<unsigned char>(c)] == 16; }
 int digit(char c) {
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    return -1;
+    const int v = classes[static_cast<unsigned char>(c)];
+    return v < 16 ? v : -1;
 }
 bool starts_with_0x_marker(std::string_view s) {  // nRF Connect's "(0x)"
     return s.size() >= 4 && s[0] == '(' && s[1] == '0' && (s[2] == 'x' || s[2] == 'X') && s[3] == ')';
@@ -44,6 +38,28 @@ std::string shown(char c) {
 
 std::optional<byte_vector> parse_hex_text(std::string_view text, std::string& error) {
     byte_vector out;
+    if (!parse_hex_into(text, out, error)) return std::nullopt;
+    return out;
+}
+
+bool parse_hex_into(std::string_view text, byte_vector& out, std::string& error) {
+    out.clear();
+    // the common spellings first ("01-6D-50", "01 6D 50", "016D50"): two digits, then a separator or not
+    {
+        std::size_t k = 0;
+        const std::size_t n = text.size();
+        while (k + 1 < n) {
+            const unsigned hi = classes[static_cast<unsigned char>(text[k])];
+            const unsigned lo = classes[static_cast<unsigned char>(text[k + 1])];
+            if ((hi | lo) >= 16) break;
+            out.push_back(static_cast<std::uint8_t>(hi << 4 | lo));
+            k += 2;
+            if (k < n && classes[static_cast<unsigned char>(text[k])] == 16) ++k;
+        }
+        if (k == n && !out.empty() && n > 0 && !(n >= 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X')))
+            return true;
+        out.clear();
+    }
     std::size_t i = 0;
     while (i < text.size()) {
         if (is_separator(text[i])) {
@@ -62,7 +78,7 @@ std::optional<byte_vector> parse_hex_text(std::string_view text, std::string& er
         for (std::size_t k = d; k < end; ++k) {
             if (digit(text[k]) < 0) {
                 error = "bad hex: " + shown(text[k]) + " at character " + std::to_string(k) + " is not a hex digit";
-                return std::nullopt;
+                return false;
             }
         }
         const std::size_t digits = end - d;
@@ -72,9 +88,9 @@ std::optional<byte_vector> parse_hex_text(std::string_view text, std::string& er
             continue;
         }
         if (digits == 0 || digits % 2 != 0) {
-            error = "bad hex: odd number of hex digits in \"" + std::string(text.substr(start, end - start)) +
+            error = "bad hex: odd number of hex digits in \"" + shorten(text.substr(start, end - start)) +
                     "\" at character " + std::to_string(start) + " (each byte is two hex digits, or one after 0x)";
-            return std::nullopt;
+            return false;
         }
         for (std::size_t k = d; k < end; k += 2)
             out.push_back(static_cast<std::uint8_t>(digit(text[k]) << 4 | digit(text[k + 1])));
@@ -82,9 +98,9 @@ std::optional<byte_vector> parse_hex_text(std::string_view text, std::string& er
     }
     if (out.empty()) {
         error = "bad hex: no hex bytes given";
-        return std::nullopt;
+        return false;
     }
-    return out;
+    return true;
 }
 
 bool looks_like_hex_text(std::span<const std::uint8_t> data) {

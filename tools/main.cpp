@@ -14,6 +14,8 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <memory>
+#include <tuple>
 
 #include "cli.hpp"
 
@@ -35,76 +37,79 @@ void out_line(const std::string& s) {
 }
 void err_line(const std::string& s) { std::fprintf(stderr, "%s\n", s.c_str()); }
 
-int report(const protocol& p, const outcome& o, const output_format& out) {
-    if (o.status != exit_ok) {
-        out.print(render_json_error(o.error, {{"protocol", std::string(p.name)}}), "");
-        err_line("error: " + o.error);
-        for (const auto& h : o.hints) err_line("hint: " + h);
-        return o.status;
-    }
-    out.print(render_json(p.name, o), render_text(p.name, o));
-    return exit_ok;
-}
-
-// --format, and --json as its short form: the format chosen.
+// --format (and --json as its short form), --line-buffered, and for CSV --message and --out-dir.
 struct format_option {
     std::string name;
     bool json = false;
-    const output_format& get() const {
-        return *find_output_format(json ? "json" : name.empty() ? output_formats()[0].name : name);
+    bool line_buffered = false;
+    std::string message, out_dir;
+    format_kind kind() const {
+        return find_output_format(json ? "json" : name.empty() ? output_formats()[0].name : name)->kind;
+    }
+    // The output, or nullptr after a usage error (reported).
+    std::unique_ptr<output> make() const {
+        auto o = std::make_unique<output>(kind(), line_buffered || ::isatty(1));
+        if (o->kind == format_kind::csv) {
+            if (message.empty() && out_dir.empty()) {
+                err_line(
+                    "error: --format csv writes one table per message: give --message NAME (robowire list) or "
+                    "--out-dir DIR");
+                return nullptr;
+            }
+            o->csv_message = message;
+            o->out_dir = out_dir;
+        } else if (!message.empty() || !out_dir.empty()) {
+            err_line("error: --message and --out-dir go with --format csv");
+            return nullptr;
+        }
+        return o;
     }
 };
-// Adds --format and --json to `sub`; `what`: --json's help.
-void add_format_options(CLI::App& sub, format_option& f, const std::string& what) {
+// Adds --format, --json and --line-buffered (and CSV's options) to `sub`; `what`: --json's help.
+void add_format_options(CLI::App& sub, format_option& f, const std::string& what, bool csv) {
     std::string help = "output format:";
     std::vector<std::string> names;
     for (const output_format& o : output_formats()) {
+        if (!csv && o.kind == format_kind::csv) continue;
         names.emplace_back(o.name);
         help += std::string(names.size() == 1 ? " " : "; ") + std::string(o.name) +
                 (names.size() == 1 ? " (default)" : "") + ", " + std::string(o.help);
     }
     auto* format = sub.add_option("--format", f.name, help)->check(CLI::IsMember(names));
     sub.add_flag("--json", f.json, what)->excludes(format);
+    sub.add_flag("--line-buffered", f.line_buffered,
+                 "write each record as it is decoded (the default when stdout is a terminal; otherwise in blocks)");
+    if (csv) {
+        sub.add_option("--message", f.message, "CSV: the message whose table is written (e.g. status)");
+        sub.add_option("--out-dir", f.out_dir,
+                       "CSV: one file per message in DIR, <protocol>_<message>.csv (with --message: that one only)");
+    }
+}
+// The CSV files written (stderr), and a write error (exit status 1).
+int finish_output(output& out, int rc) {
+    out.flush();
+    for (const auto& f : out.files) err_line("wrote " + f);
+    if (!out.write_error.empty()) {
+        err_line("error: " + out.write_error);
+        return rc ? rc : exit_bad_input;
+    }
+    return rc;
+}
+
+int report(const protocol& p, std::span<const std::uint8_t> bytes, direction d, output& out) {
+    const outcome o = p.decode(bytes, d, out, {});
+    if (o.status != exit_ok) {
+        out.error({}, o.error, "", {{"protocol", p.name}}, {});
+        out.flush();
+        err_line("error: " + o.error);
+        for (const auto& h : o.hints) err_line("hint: " + h);
+        return o.status;
+    }
+    return exit_ok;
 }
 
 // ---- input files: binary or hex text
-struct input {
-    byte_vector bytes;
-    bool hex_text = false;
-};
 enum class input_mode { detect, hex, binary };
-
-// Reads all of `path` ("-": stdin). Exit status on failure.
-int read_all(const std::string& path, byte_vector& out) {
-    FILE* f = path == "-" ? stdin : std::fopen(path.c_str(), "rb");
-    if (!f) {
-        err_line("error: cannot open " + path + ": " + std::strerror(errno));
-        return exit_bad_input;
-    }
-    std::uint8_t buf[4096];
-    std::size_t n = 0;
-    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) out.insert(out.end(), buf, buf + n);
-    if (f != stdin) std::fclose(f);
-    return exit_ok;
-}
-int read_input(const std::string& path, input_mode mode, input& in) {
-    byte_vector raw;
-    if (const int rc = read_all(path, raw)) return rc;
-    in.hex_text = mode == input_mode::hex || (mode == input_mode::detect && looks_like_hex_text(raw));
-    if (!in.hex_text) {
-        in.bytes = std::move(raw);
-        return exit_ok;
-    }
-    std::string error;
-    const auto b = parse_hex_text(std::string_view(reinterpret_cast<const char*>(raw.data()), raw.size()), error);
-    if (!b) {
-        err_line("error: " + path + ": " + error);
-        return exit_bad_input;
-    }
-    in.bytes = *b;
-    return exit_ok;
-}
-const char* input_kind(bool hex_text) { return hex_text ? "hex text" : "binary"; }
 
 // ---- decode
 struct decode_options {
@@ -114,9 +119,24 @@ struct decode_options {
     std::string direction;
     format_option format;
     bool hex_file = false, binary_file = false;
+    std::string since, until;
 };
 direction direction_of(const std::string& name) {
     return name == "command" ? direction::command : name == "notification" ? direction::notification : direction::any;
+}
+// --since / --until into `opt`; false after a usage error (reported).
+bool time_range(const std::string& since, const std::string& until, log_options& opt) {
+    for (const auto& [text, slot, name] :
+         {std::tuple{&since, &opt.since, "--since"}, {&until, &opt.until, "--until"}}) {
+        if (text->empty()) continue;
+        *slot = parse_time_point(*text);
+        if (!*slot) {
+            err_line(std::string("error: ") + name + ": " + shorten(*text) +
+                     " is no time: give HH:MM[:SS[.mmm]] or YYYY-MM-DD[THH:MM[:SS[.mmm]]]");
+            return false;
+        }
+    }
+    return true;
 }
 
 int run_decode(const decode_options& opt) {
@@ -125,56 +145,77 @@ int run_decode(const decode_options& opt) {
         err_line("error: --direction applies to buwizz3 only");
         return exit_usage;
     }
-    byte_vector bytes;
+    log_options lo;
+    lo.forced = direction_of(opt.direction);
+    if (!time_range(opt.since, opt.until, lo)) return exit_usage;
+    const auto out = opt.format.make();
+    if (!out) return exit_usage;
     if (!opt.file.empty()) {
         if (!opt.hex.empty()) {
             err_line("error: give hex bytes or --file, not both");
             return exit_usage;
         }
-        byte_vector raw;
-        if (const int rc = read_all(opt.file, raw)) return rc;
-        const std::string name = opt.file == "-" ? "stdin" : opt.file;
-        // text (hex lines, an nRF Connect log): every line that holds a frame
-        if (opt.hex_file || (!opt.binary_file && looks_like_text(raw)))
-            return decode_lines(pp, name, std::string_view(reinterpret_cast<const char*>(raw.data()), raw.size()),
-                                opt.format.get(), direction_of(opt.direction), false);
+        input_stream in;
+        std::string error;
+        if (!in.open(opt.file, error)) {
+            err_line("error: " + error);
+            return exit_bad_input;
+        }
+        // text (hex lines, an nRF Connect log): every line that holds a frame, as it is read
+        if (opt.hex_file || (!opt.binary_file && !looks_binary(in.peek())))
+            return finish_output(*out, decode_lines(pp, in, *out, lo));
         if (!pp) {
             err_line("error: a binary file holds one frame: give its protocol (robowire decode buwizz3 --file " +
                      opt.file + ")");
             return exit_usage;
         }
-        err_line("read " + name + " as binary (" + std::to_string(raw.size()) +
-                 (raw.size() == 1 ? " byte)" : " bytes)"));
-        bytes = std::move(raw);
-    } else {
-        if (!pp && opt.hex.empty()) {
-            err_line("error: decode needs a protocol and hex bytes, or --file (robowire decode --help)");
-            return exit_usage;
-        }
-        if (opt.hex.empty()) {
-            err_line("error: decode needs hex bytes or --file (robowire decode --help)");
-            return exit_usage;
-        }
-        std::string joined;
-        for (const auto& a : opt.hex) joined += (joined.empty() ? "" : " ") + a;
-        // a line copied from an nRF Connect log: its value, direction and UUID
-        if (is_log_line(joined))
-            return decode_lines(pp, "the argument", joined, opt.format.get(), direction_of(opt.direction), false);
-        std::string error;
-        if (!pp) {
-            err_line("error: decode needs a protocol before the bytes: " + protocol_names() +
-                     " (robowire decode --help)");
-            return exit_usage;
-        }
-        const auto b = parse_hex_text(joined, error);
-        if (!b) {
-            opt.format.get().print(render_json_error(error, {}), "");
-            err_line("error: " + error);
+        // one frame: at most 64 KB are read (a frame is far shorter)
+        byte_vector bytes;
+        for (auto b = in.read(); !b.empty() && bytes.size() <= (1u << 16); b = in.read())
+            bytes.insert(bytes.end(), b.begin(), b.end());
+        if (!in.error.empty()) {
+            err_line("error: " + in.error);
             return exit_bad_input;
         }
-        bytes = *b;
+        if (bytes.size() > (1u << 16)) {
+            err_line("error: " + in.name +
+                     " read as binary holds one frame, and it is longer than 65536 bytes "
+                     "(use --hex for a hex dump)");
+            return exit_bad_input;
+        }
+        err_line("read " + in.name + " as binary (" + std::to_string(bytes.size()) +
+                 (bytes.size() == 1 ? " byte)" : " bytes)"));
+        return finish_output(*out, report(*pp, bytes, lo.forced, *out));
     }
-    return report(*pp, pp->decode(bytes, direction_of(opt.direction)), opt.format.get());
+    if (!pp && opt.hex.empty()) {
+        err_line("error: decode needs a protocol and hex bytes, or --file (robowire decode --help)");
+        return exit_usage;
+    }
+    if (opt.hex.empty()) {
+        err_line("error: decode needs hex bytes or --file (robowire decode --help)");
+        return exit_usage;
+    }
+    std::string joined;
+    for (const auto& a : opt.hex) joined += (joined.empty() ? "" : " ") + a;
+    // a line copied from an nRF Connect log: its value, direction and UUID
+    if (is_log_line(joined)) {
+        input_stream in;
+        in.open_text(joined, "the argument");
+        return finish_output(*out, decode_lines(pp, in, *out, lo));
+    }
+    std::string error;
+    if (!pp) {
+        err_line("error: decode needs a protocol before the bytes: " + protocol_names() + " (robowire decode --help)");
+        return exit_usage;
+    }
+    const auto b = parse_hex_text(joined, error);
+    if (!b) {
+        out->error({}, error, "");
+        out->flush();
+        err_line("error: " + error);
+        return exit_bad_input;
+    }
+    return finish_output(*out, report(*pp, *b, lo.forced, *out));
 }
 
 // ---- encode
@@ -201,52 +242,111 @@ int run_encode(const std::string& protocol_name, const std::string& message,
 
 // ---- scan / monitor: OSP frames in a byte stream
 struct osp_printer {
-    explicit osp_printer(const output_format& f) : out(f) {}
-    const output_format& out;
+    explicit osp_printer(output& f) : out(f) {}
+    output& out;
     robowire::osp::scanner scanner;
+    std::size_t line = 0;  // hex text: the line the bytes come from
     void feed(std::span<const std::uint8_t> chunk) {
         scanner.feed(chunk, [&](robowire::osp::scanner::frame_bytes f) {
-            const outcome o = osp_protocol().decode(f, direction::any);
-            if (o.status == exit_ok) out.print(render_json("osp", o), render_text("osp", o));
-            else
-                out.print(render_json_error(o.error, {{"protocol", "osp"}, {"bytes", hex_of(f)}}),
-                          "osp frame " + hex_of(f) + ": " + o.error + "\n");
+            record_meta meta;
+            meta.line = line;
+            const outcome o = osp_protocol().decode(f, direction::any, out, meta);
+            if (o.status == exit_ok) return;
+            std::string prefix;
+            put_text_prefix(prefix, meta);
+            const std::string bytes = hex_of(f);
+            if (!out.error(meta, o.error, prefix + "osp frame " + bytes + ": " + o.error + "\n",
+                           {{"protocol", "osp"}, {"bytes", bytes}}))
+                err_line("error: osp frame " + bytes + ": " + o.error);
         });
     }
-    void counters(const char* input) const {
-        out.print(render_json_counters({{"frames", scanner.frames()},
-                                        {"skipped_bytes", scanner.skipped()},
-                                        {"false_starts", scanner.false_starts()}},
-                                       input ? input : ""),
-                  "frames " + std::to_string(scanner.frames()) + ", skipped bytes " +
-                      std::to_string(scanner.skipped()) + ", false starts " + std::to_string(scanner.false_starts()) +
-                      (input ? std::string("; input read as ") + input : std::string()) + "\n");
+    // bad_lines: hex text lines skipped (hex input only)
+    void counters(const char* input, const std::size_t* bad_lines = nullptr) {
+        std::vector<std::pair<std::string, std::uint64_t>> cs = {{"frames", scanner.frames()},
+                                                                 {"skipped_bytes", scanner.skipped()},
+                                                                 {"false_starts", scanner.false_starts()}};
+        std::string text = "frames " + std::to_string(scanner.frames()) + ", skipped bytes " +
+                           std::to_string(scanner.skipped()) + ", false starts " +
+                           std::to_string(scanner.false_starts());
+        if (bad_lines) {
+            cs.emplace_back("lines_skipped", *bad_lines);
+            text += ", lines skipped " + std::to_string(*bad_lines);
+        }
+        if (input) text += std::string("; input read as ") + input;
+        if (!out.counters(cs, input ? input : "", text + "\n")) err_line(text);
     }
 };
 
 // scan buwizz3 / navbot: a BLE log has one frame per line.
-int run_scan_lines(const protocol& proto, const std::string& path, const output_format& out, input_mode mode) {
-    byte_vector raw;
-    if (const int rc = read_all(path, raw)) return rc;
-    const std::string name = path == "-" ? "stdin" : path;
-    if (mode == input_mode::binary || (mode == input_mode::detect && !looks_like_text(raw))) {
-        err_line("error: scan " + std::string(proto.name) +
-                 " reads text, one frame per line (hex, or an nRF Connect log); " + name + " is binary");
+int run_scan_lines(const protocol& proto, const std::string& path, output& out, input_mode mode) {
+    input_stream in;
+    std::string error;
+    if (!in.open(path, error)) {
+        err_line("error: " + error);
         return exit_bad_input;
     }
-    return decode_lines(&proto, name, std::string_view(reinterpret_cast<const char*>(raw.data()), raw.size()), out,
-                        direction::any, true);
+    if (mode == input_mode::binary || (mode == input_mode::detect && looks_binary(in.peek()))) {
+        err_line("error: scan " + std::string(proto.name) +
+                 " reads text, one frame per line (hex, or an nRF Connect log); " + in.name + " is binary");
+        return exit_bad_input;
+    }
+    log_options lo;
+    lo.scan = true;
+    return finish_output(out, decode_lines(&proto, in, out, lo));
 }
 
-int run_scan(const std::string& path, const output_format& out, input_mode mode) {
+int run_scan(const std::string& path, output& out, input_mode mode) {
     osp_printer p(out);
-    input in;
-    if (const int rc = read_input(path, mode, in)) return rc;
-    err_line(std::string("scan: reading ") + (path == "-" ? "stdin" : path) + " as " + input_kind(in.hex_text) +
-             (in.hex_text ? "" : " (use --hex for a hex dump)"));
-    p.feed(in.bytes);
-    p.counters(input_kind(in.hex_text));
-    return exit_ok;
+    input_stream in;
+    std::string error;
+    if (!in.open(path, error)) {
+        err_line("error: " + error);
+        return exit_bad_input;
+    }
+    const auto first = in.peek();
+    const bool empty = first.empty() && in.error.empty();
+    const bool hex = mode == input_mode::hex || (mode == input_mode::detect && looks_like_hex_lines(first));
+    const char* kind = empty ? "empty" : hex ? "hex text" : "binary";
+    err_line(std::string("scan: reading ") + in.name + " as " + kind +
+             (hex || empty ? "" : " (use --hex for a hex dump)"));
+    std::size_t bad = 0;
+    in.flush_before_wait = &out;
+    if (hex) {
+        // line by line: a line that is not hex is reported with its number and skipped
+        std::string_view line;
+        std::size_t length = 0;
+        bool ended = true;
+        byte_vector bytes;
+        while (in.next_line(line, length, ended)) {
+            ++p.line;
+            std::string why = length > line.size() ? "line too long: " + std::to_string(length) + " bytes, skipped"
+                                                   : control_byte(line);
+            const auto t = line.find_first_not_of(" \t");
+            if (why.empty() && (t == std::string_view::npos || line[t] == '#')) continue;
+            if (why.empty() && !parse_hex_into(line, bytes, why)) {
+            } else if (why.empty()) {
+                p.feed(bytes);
+                continue;
+            }
+            ++bad;
+            why = shorten(why, 200);
+            record_meta meta;
+            meta.line = p.line;
+            std::string prefix;
+            put_text_prefix(prefix, meta);
+            if (!out.error(meta, why, prefix + "error: " + why + "\n"))
+                err_line("error: line " + std::to_string(p.line) + ": " + why);
+        }
+    } else {
+        for (auto b = in.read(); !b.empty(); b = in.read()) p.feed(b);
+    }
+    if (!in.error.empty()) {
+        out.flush();
+        err_line("error: " + in.error);
+        return exit_bad_input;
+    }
+    p.counters(kind, hex ? &bad : nullptr);
+    return finish_output(out, exit_ok);
 }
 
 speed_t baud_of(long baud) {
@@ -270,7 +370,9 @@ struct monitor_options {
     format_option format;
 };
 int run_monitor(const monitor_options& opt) {
-    osp_printer p(opt.format.get());
+    const auto out = opt.format.make();
+    if (!out) return exit_usage;
+    osp_printer p(*out);
     const int fd = ::open(opt.device.c_str(), O_RDONLY | O_NOCTTY | O_NONBLOCK);
     if (fd < 0) {
         err_line("error: cannot open " + opt.device + ": " + std::strerror(errno));
@@ -296,12 +398,14 @@ int run_monitor(const monitor_options& opt) {
         pollfd pfd{fd, POLLIN, 0};
         if (::poll(&pfd, 1, 100) <= 0) continue;
         const ssize_t n = ::read(fd, buf, sizeof buf);
-        if (n > 0) p.feed(std::span(buf, static_cast<std::size_t>(n)));
-        else if (n == 0 || (errno != EAGAIN && errno != EINTR)) break;
+        if (n > 0) {
+            p.feed(std::span(buf, static_cast<std::size_t>(n)));
+            out->flush();  // live: what a read brought is written at once
+        } else if (n == 0 || (errno != EAGAIN && errno != EINTR)) break;
     }
     ::close(fd);
     p.counters(nullptr);
-    return exit_ok;
+    return finish_output(*out, exit_ok);
 }
 
 // Subcommands defined elsewhere register here.
@@ -341,7 +445,10 @@ int main(int argc, char** argv) {
                     one_of + " (with --file, may be left out: each log line's characteristic UUID picks it)")
         ->check(CLI::IsMember(names));
     dec->add_option("hex", dec_opt.hex, "bytes: \"01 6D\", 016D, 0x01,0x6D, 01-6D, 01:6D, (0x) 01-6D");
-    add_format_options(*dec, dec_opt.format, "one JSON object on stdout");
+    add_format_options(*dec, dec_opt.format, "one JSON object on stdout", true);
+    dec->add_option("--since", dec_opt.since,
+                    "logs: only frames logged at or after this time (HH:MM[:SS[.mmm]] or YYYY-MM-DDTHH:MM...)");
+    dec->add_option("--until", dec_opt.until, "logs: only frames logged at or before this time");
     dec->add_option("--direction", dec_opt.direction,
                     "BuWizz3: command or notification (default: what the command byte and length allow)")
         ->check(CLI::IsMember({"command", "notification"}));
@@ -371,7 +478,8 @@ int main(int argc, char** argv) {
                                     "buwizz3, navbot: every frame of a log, one per line, NAVBOT messages reassembled");
     scan->add_option("protocol", scan_protocol, "osp, buwizz3 or navbot")->required()->check(CLI::IsMember(names));
     scan->add_option("file", scan_path, "file to read, - for stdin (default)");
-    add_format_options(*scan, scan_format, "JSON lines on stdout: messages, errors, counters (each with a \"type\")");
+    add_format_options(*scan, scan_format, "JSON lines on stdout: messages, errors, counters (each with a \"type\")",
+                       false);
     auto* scan_hexf = scan->add_flag("--hex", scan_hex, "the input is hex text");
     auto* scan_binf = scan->add_flag("--binary", scan_bin, "the input is binary");
     scan_hexf->excludes(scan_binf);
@@ -384,7 +492,8 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({9600L, 19200L, 38400L, 57600L, 115200L, 230400L, 460800L, 921600L}));
     mon->add_option("--count", mon_opt.count, "stop after N frames")->check(not_negative);
     mon->add_option("--timeout", mon_opt.timeout, "stop after S seconds")->check(not_negative);
-    add_format_options(*mon, mon_opt.format, "JSON lines on stdout: messages, errors, counters (each with a \"type\")");
+    add_format_options(*mon, mon_opt.format, "JSON lines on stdout: messages, errors, counters (each with a \"type\")",
+                       false);
 
     add_extra_commands(app);
 
@@ -422,9 +531,10 @@ int main(int argc, char** argv) {
     if (enc->parsed()) return run_encode(enc_protocol, enc_message, enc_values);
     if (scan->parsed()) {
         const auto mode = scan_hex ? input_mode::hex : scan_bin ? input_mode::binary : input_mode::detect;
-        if (scan_protocol != "osp")
-            return run_scan_lines(*find_protocol(scan_protocol), scan_path, scan_format.get(), mode);
-        return run_scan(scan_path, scan_format.get(), mode);
+        const auto out = scan_format.make();
+        if (!out) return exit_usage;
+        if (scan_protocol != "osp") return run_scan_lines(*find_protocol(scan_protocol), scan_path, *out, mode);
+        return run_scan(scan_path, *out, mode);
     }
     if (mon->parsed()) return run_monitor(mon_opt);
     return exit_ok;  // an extra subcommand ran in its callback

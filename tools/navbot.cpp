@@ -1,11 +1,12 @@
 // NAVBOT-ES02: 20-byte frames, from navbot::message.
 #include "describe.hpp"
+#include "emit.hpp"
 
 namespace robowire::cli {
 namespace {
 namespace nb = robowire::navbot;
 
-outcome decode(std::span<const std::uint8_t> in, direction) {
+outcome decode(std::span<const std::uint8_t> in, direction, output& out, const record_meta& meta) {
     const auto r = nb::decode_frame(in);
     if (!r) {
         outcome o = failure(exit_bad_input, describe_decode_error<nb::message>(in, r.error()));
@@ -14,18 +15,8 @@ outcome decode(std::span<const std::uint8_t> in, direction) {
         o.hints = sign_magnitude_notes(in);
         return o;
     }
-    outcome o = outcome_of(*r);
-    o.hints = sign_magnitude_notes(in);
-    if (const auto* f = std::get_if<nb::frame>(&*r); f && f->command == nb::command::json) {
-        std::string text;
-        for (const std::uint8_t b : f->payload) {
-            if (b == 0) break;
-            text += static_cast<char>(b);
-        }
-        for (node& c : o.fields.children)
-            if (c.key == "payload") c.payload_text = text;
-    }
-    return o;
+    emit::variant_message(out, meta, "navbot", *r, sign_magnitude_notes(in));
+    return {};
 }
 
 std::string list(bool fields) {
@@ -36,7 +27,7 @@ std::string list(bool fields) {
 
 outcome encode(std::string_view message, const std::vector<std::pair<std::string, std::string>>& values) {
     if (auto o = encode_in<nb::message>(message, values)) return *o;
-    return failure(exit_usage, "unknown message " + std::string(message) + " (robowire list navbot)");
+    return failure(exit_usage, "unknown message " + shorten(message) + " (robowire list navbot)");
 }
 }  // namespace
 

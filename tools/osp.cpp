@@ -1,5 +1,6 @@
 // OSP: 10-byte serial frames FF AA DEV CMD P1..P4 55 77, from osp::message.
 #include "describe.hpp"
+#include "emit.hpp"
 
 namespace robowire::cli {
 namespace {
@@ -35,9 +36,13 @@ std::string marker_error(std::span<const std::uint8_t> in, const robowire::error
     return s;
 }
 
-outcome decode(std::span<const std::uint8_t> in, direction) {
+outcome decode(std::span<const std::uint8_t> in, direction, output& out, const record_meta& meta) {
     const auto r = osp::decode(in);
-    if (r) return outcome_of(*r);
+    if (r) {
+        static const std::vector<std::string> no_notes;
+        emit::variant_message(out, meta, "osp", *r, no_notes);
+        return {};
+    }
     if (r.code() == errc::bad_header || r.code() == errc::bad_trailer)
         return failure(exit_bad_input, marker_error(in, r.error()));
     outcome o = failure(exit_bad_input, describe_decode_error<osp::message>(in, r.error()));
@@ -56,7 +61,7 @@ std::string list(bool fields) {
 
 outcome encode(std::string_view message, const std::vector<std::pair<std::string, std::string>>& values) {
     if (auto o = encode_in<osp::message>(message, values)) return *o;
-    return failure(exit_usage, "unknown message " + std::string(message) + " (robowire list osp)");
+    return failure(exit_usage, "unknown message " + shorten(message) + " (robowire list osp)");
 }
 }  // namespace
 

@@ -401,7 +401,7 @@ check(rc == 1 and out == "" and "error: line 15: bad header byte at byte 0" in e
       f"navbot on a BuWizz3 log: the BuWizz3 characteristic's lines are skipped: {rc} {err!r}")
 # a log line given as the argument; a log with bare hex lines pasted in
 rc, out, err = run("decode", "buwizz3", f"I 10:12:09.700 Data written to {APP}, value: (0x) 32-32")
-check(rc == 0 and out.startswith("line 1 (host to device): buwizz3 set_data_period"), f"log line argument: {rc} {out!r} {err!r}")
+check(rc == 0 and out.startswith("10:12:09.700 line 1 (host to device): buwizz3 set_data_period"), f"log line argument: {rc} {out!r} {err!r}")
 mixed = f"I 13:40:29.880 Notification received from {APP}, value: (0x) AC\n30 7F 81 00 40 C0 01 21 3F\n32 32\n"
 rc, out, err = run("decode", "--file", "-", "--json", stdin=mixed.encode())
 check(rc == 2 and "line 2: which protocol?" in err, f"mixed log without protocol: {rc} {err!r}")
@@ -412,7 +412,7 @@ check(rc == 0 and [(d.get("line"), d.get("message")) for d in map(parse_json, ou
 other_log = "I 09:00:00.000 Connected to D4:37:A1:0C:55:2E\n" \
             "I 09:00:01.000 Data written to 0000ffe1-0000-1000-8000-00805f9b34fb, value: (0x) 32-32\n"
 rc, out, err = run("decode", "buwizz3", "--file", "-", stdin=other_log.encode())
-check(rc == 0 and out.startswith("line 2 (host to device): buwizz3 set_data_period"), f"unknown UUID, protocol given: {rc} {out!r} {err!r}")
+check(rc == 0 and out.startswith("09:00:01.000 line 2 (host to device): buwizz3 set_data_period"), f"unknown UUID, protocol given: {rc} {out!r} {err!r}")
 rc, out, err = run("decode", "--file", "-", stdin=other_log.encode())
 check(rc == 1 and "no frame in stdin: 2 lines" in err and "1 value of another characteristic: 0000ffe1-0000-1000-8000-00805f9b34fb" in err,
       f"unknown UUID, no protocol: {rc} {err!r}")
@@ -536,6 +536,150 @@ if shutil.which("socat"):
           f"monitor --json over a pty: {out!r} {err!r}")
 else:
     check(False, "socat is not installed")
+
+# ---- logs at scale: streamed line by line, time in every record, CSV, bad input costs its line only
+import csv, io, select
+td = tempfile.mkdtemp()
+def tmp(name, data):
+    path = os.path.join(td, name)
+    with open(path, "wb") as fh:
+        fh.write(data if isinstance(data, bytes) else data.encode())
+    return path
+
+# streaming: the first line's record comes out of a pipe before the second line is written
+p = subprocess.Popen([TOOL, "decode", "buwizz3", "--file", "-"], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                     stderr=subprocess.PIPE)
+p.stdin.write(f"nRF Connect, 2026-03-14\nI 10:12:06.655 Notification received from {APP}, value: (0x) {status_dashes}\n".encode())
+p.stdin.flush()
+ready, _, _ = select.select([p.stdout], [], [], 10)
+first = os.read(p.stdout.fileno(), 200).decode() if ready else ""
+p.stdin.write(f"I 10:12:07.000 Data written to {APP}, value: (0x) 32-32\n".encode())
+p.stdin.close()
+rest = p.stdout.read().decode()
+p.wait(timeout=10)
+check(first.startswith("2026-03-14T10:12:06.655 line 2 (device to host): buwizz3 status") and "line 3 (host to device)" in rest
+      and p.returncode == 0, f"streamed from a pipe: {first!r} {rest[-200:]!r}")
+
+# memory: the peak RSS does not grow with the input (20 k and 200 k lines within 2 MB of each other, both under 20 MB)
+def peak_rss_kb(path, *extra):
+    with tempfile.NamedTemporaryFile("r") as t:
+        subprocess.run(["/usr/bin/time", "-o", t.name, "-f", "%M", TOOL, "decode", "buwizz3", "--file", path, *extra],
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=120)
+        return int(t.read().split()[-1])
+status_line = f"I 10:12:06.655 Notification received from {APP}, value: (0x) {status_dashes}\n"
+small = tmp("small.log", "nRF Connect, 2026-03-14\n" + status_line * 20000)
+big = tmp("big.log", "nRF Connect, 2026-03-14\n" + status_line * 200000)
+if os.path.exists("/usr/bin/time"):
+    for extra in ([], ["--json"]):
+        a, b = peak_rss_kb(small, *extra), peak_rss_kb(big, *extra)
+        check(b < 20 * 1024 and b - a < 2048, f"peak RSS {extra}: {a} KB at 20 k lines, {b} KB at 200 k lines")
+else:
+    check(False, "/usr/bin/time is not installed")
+os.remove(big)
+
+# time: the header's date, midnight rollover, ISO 8601 with milliseconds; --since / --until
+roll = "nRF Connect, 2026-03-14\n" + "".join(f"I {t} Data written to {APP}, value: (0x) 32-32\n"
+                                              for t in ["23:59:59.900", "00:00:00.100", "00:00:01.000"])
+rc, out, err = run("decode", "buwizz3", "--file", "-", "--json", stdin=roll.encode())
+check(rc == 0 and [parse_json(l).get("time") for l in out.splitlines()] ==
+      ["2026-03-14T23:59:59.900", "2026-03-15T00:00:00.100", "2026-03-15T00:00:01.000"], f"time, rollover: {out!r}")
+rc, out, err = run("decode", "buwizz3", "--file", "-", "--since", "2026-03-15T00:00:00.100", "--until", "2026-03-15T00:00:00.999",
+                   stdin=roll.encode())
+check(rc == 0 and out.startswith("2026-03-15T00:00:00.100 line 3 (host to device): buwizz3 set_data_period")
+      and "line 2" not in out and "line 4" not in out and "outside time range 2" in err, f"--since/--until: {out!r} {err!r}")
+rc, out, err = run("decode", "buwizz3", "--file", "-", "--since", "25:00", stdin=roll.encode())
+check(rc == 2 and "--since" in err, f"bad --since: {rc} {err!r}")
+rc, out, err = run("decode", "buwizz3", "--file", "-", "--json", stdin=desktop_log.encode())
+check([parse_json(l).get("time") for l in out.splitlines()] == ["2026-03-14T10:15:02.331", "2026-03-14T10:15:03.127"],
+      f"desktop log times: {out!r}")
+rc, out, err = run("decode", "buwizz3", "--file", "-", "--json", stdin=panel.encode())
+check(parse_json(out).get("time") == "11:44:40.911", f"desktop panel: time of day only: {out!r}")
+rc, out, err = run("decode", "buwizz3", "--file", "-", "--json", stdin=b"32 32\n")
+check(rc == 0 and parse_json(out).get("line") == 1 and "time" not in parse_json(out), f"hex line: no time: {out!r}")
+
+# CSV: one table per message, physical values with the unit in the header, time and line first
+rc, out, err = run("decode", "buwizz3", "--file", "-", "--format", "csv", "--message", "status", stdin=android_log.encode())
+rows = list(csv.reader(io.StringIO(out)))
+head = rows[0] if rows else []
+row = dict(zip(head, rows[1])) if len(rows) > 1 else {}
+check(rc == 1 and len(rows) == 2 and head[:3] == ["time", "line", "direction"] and row.get("time") == "2026-03-14T10:12:06.655"
+      and row.get("line") == "18" and row.get("battery_voltage[V]") == "13" and row.get("motor_current_0[A]") == "0.15"
+      and row.get("motor_current_5[A]") == "3" and row.get("accel_0[mg]") == "-7.808" and row.get("temperature_c[degC]") == "35"
+      and row.get("pu_motors_3.position[deg]") == "2147483647" and row.get("pid_state.output") == "12.75",
+      f"CSV status: {rc} {out!r}")
+buf = io.StringIO()
+csv.writer(buf, lineterminator="\n").writerows(rows)
+check(buf.getvalue() == out, "CSV round-trips through Python's csv")
+rc, out, err = run("decode", "buwizz3", "20 4D 79 2C 22 42 22 00 00 00 00 00 00", "--direction", "command", "--format", "csv",
+                   "--message", "set_device_name")
+rows = list(csv.reader(io.StringIO(out)))
+check(rc == 0 and rows == [["time", "line", "direction", "name"], ["", "", "", 'My,"B"']], f"CSV quoting: {out!r}")
+outdir = os.path.join(td, "csv")
+os.mkdir(outdir)
+rc, out, err = run("decode", "buwizz3", "--file", "-", "--format", "csv", "--out-dir", outdir, stdin=android_log.encode())
+check(sorted(os.listdir(outdir)) == ["buwizz3_charger_settings.csv", "buwizz3_check_charger_settings.csv",
+                                     "buwizz3_set_data_period.csv", "buwizz3_set_motor_data.csv", "buwizz3_status.csv"]
+      and out == "" and "wrote " in err, f"CSV --out-dir: {os.listdir(outdir)} {err!r}")
+rc, out, err = run("decode", "buwizz3", "--file", "-", "--format", "csv", stdin=android_log.encode())
+check(rc == 2 and "--message" in err and out == "", f"CSV needs --message or --out-dir: {rc} {err!r}")
+
+# bad input: one stray control byte costs its line, not the file
+stray = ["FF AA 02 12 D2 04 00 00 55 77"] * 1000
+stray[499] = "FF AA 02 12 D2\x0104 00 00 55 77"
+stray_path = tmp("stray.txt", "\n".join(stray) + "\n")
+rc, out, err = run("scan", "osp", stray_path, "--json")
+last = parse_json(out.splitlines()[-1])
+check(rc == 0 and last.get("frames") == 999 and last.get("lines_skipped") == 1 and last.get("input") == "hex text"
+      and any(parse_json(l).get("line") == 500 and "control byte 0x01" in parse_json(l).get("error", "") for l in out.splitlines()),
+      f"scan osp, a stray byte: {rc} {last}")
+rc, out, err = run("decode", "osp", "--file", stray_path)
+check(rc == 1 and out.count("osp voltage") == 999 and "error: line 500: not text: control byte 0x01 at character 14" in err
+      and "decoded 999, errors 1" in err, f"decode --file, a stray byte: {rc} {err!r}")
+# CR, LF and CRLF all end a line
+for name, data in [("CR", "32 32\r30 7F 81 00 40 C0 01 21 3F\r32 32\r"), ("mixed", "32 32\r\n30 7F 81 00 40 C0 01 21 3F\n32 32\r")]:
+    rc, out, err = run("decode", "buwizz3", "--file", "-", "--json", stdin=data.encode())
+    check(rc == 0 and [(d.get("line"), d.get("message")) for d in map(parse_json, out.splitlines())] ==
+          [(1, "set_data_period"), (2, "set_motor_data"), (3, "set_data_period")], f"{name} line ends: {out!r} {err!r}")
+# a directory, an unreadable file, a closed stdin: an error, exit 1
+for args in (["decode", "buwizz3", "--file", td], ["scan", "osp", td], ["scan", "navbot", td]):
+    rc, out, err = run(*args)
+    check(rc == 1 and "is a directory" in err and out == "", f"{args[:2]} on a directory: {rc} {err!r}")
+rc, out, err = run("scan", "osp", "/proc/self/mem")
+check(rc == 1 and "cannot read /proc/self/mem" in err, f"a read error: {rc} {err!r}")
+for args in (["scan", "osp", "-"], ["decode", "buwizz3", "--file", "-"]):
+    p = subprocess.run(["sh", "-c", 'exec "$0" "$@" <&-', TOOL, *args], capture_output=True, timeout=30)
+    check(p.returncode == 1 and b"stdin is closed" in p.stderr, f"{args[:2]} with stdin closed: {p.returncode} {p.stderr!r}")
+# an empty file is empty
+empty = tmp("empty.txt", b"")
+rc, out, err = run("decode", "buwizz3", "--file", empty)
+check(rc == 1 and "no frame in " + empty + ": it is empty" in err and "binary" not in err, f"empty file: {rc} {err!r}")
+rc, out, err = run("scan", "osp", empty, "--json")
+check(rc == 0 and parse_json(out).get("input") == "empty" and parse_json(out).get("frames") == 0, f"scan an empty file: {out!r}")
+# long values are shortened in messages
+big_hex = "AB" * 61440
+rc, out, err = run("encode", "buwizz3", "charger_settings", "data=" + big_hex)
+check(rc == 1 and "(122880 characters)" in err and len(err) < 400, f"a 120 KB data= value: {len(err)} {err[:120]!r}")
+rc, out, err = run("decode", "buwizz3", "--file", "-", stdin=("32 32\n" + "A" * 60001 + "\n").encode())
+check(rc == 1 and "line 2: bad hex: odd number of hex digits" in err and "(60001 characters)" in err and len(err) < 600,
+      f"a 60 KB bad hex line: {len(err)} {err[:120]!r}")
+# NUL bytes, invalid UTF-8, a 1 MB line, a truncated last line: the line named, the rest decoded
+for name, data, text in [
+        ("NUL", b"32 32\n32\x0032\n32 32\n", "line 2: not text: control byte 0x00 at character 2"),
+        ("invalid UTF-8", b"32 32\n32 \xc3\x28 32\n32 32\n", "line 2: bad hex: byte 0xC3 at character 3"),
+        ("1 MB line", b"32 32\n" + b"32" * (1 << 19) + b"\n32 32\n", "line 2: line too long: 1048576 bytes"),
+        ("truncated", b"32 32\n32 32\n30 7F 81 00 4", "line 3: bad hex: odd number of hex digits in \"4\""),
+]:
+    rc, out, err = run("decode", "buwizz3", "--file", "-", stdin=data)
+    check(rc == 1 and text in err and len(err) < 600 and out.count("buwizz3 set_data_period") == 2, f"{name}: {rc} {err[:300]!r}")
+    rc, out, err = run("decode", "buwizz3", "--file", "-", "--json", stdin=data)
+    docs = [parse_json(l) for l in out.splitlines()]
+    errors = [f"line {d.get('line')}: {d.get('error')}" for d in docs if d.get("type") == "error"]
+    check(rc == 1 and len(errors) == 1 and text in errors[0] and len(out) < 2000 and all(docs)
+          and sum(d.get("message") == "set_data_period" for d in docs) == 2, f"{name} --json: {rc} {errors!r}")
+rc, out, err = run("decode", "buwizz3", "--file", "-", "--json", stdin=b"32 32\n32 \xc3\x28 32\n")
+check(parse_json(out.splitlines()[-1]).get("line") == 2 and "0xC3" in parse_json(out.splitlines()[-1]).get("error", ""),
+      f"invalid UTF-8: a valid JSON error line: {out!r}")
+shutil.rmtree(td)
 
 # ---- the examples in docs/cli.md and README.md are what the tool prints ("..." stands for the rest)
 import shlex
