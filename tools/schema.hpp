@@ -11,7 +11,8 @@
 //        "fixed": [{"offset": 0, "value": 48, "error": "bad_command"}],
 //        "lengths": [[9, 9]],          // accepted input lengths, as runs [first, last]
 //        "min_size": 9, "max_size": 9, "max_input": 9,
-//        "fields": [FIELD...]}]}]}
+//        "fields": [FIELD...]}]}],
+//    "errors": [{"code": 0, "name": "ok", "text": "ok"}, ...]}   // robowire::errc_table
 //
 //   FIELD: {"name", "offset", "type" (wire type: u8 i8 u16le i16le u32le i32le
 //           f32le bits text tail record), "value" (the decoded value's kind:
@@ -45,32 +46,9 @@ using json = nlohmann::ordered_json;
 
 inline constexpr int format_version = 1;
 
-// Name of an error code as the schema and the Python package spell it.
-constexpr std::string_view errc_name(errc e) noexcept {
-    switch (e) {
-    case errc::ok: return "ok";
-    case errc::too_short: return "too_short";
-    case errc::too_long: return "too_long";
-    case errc::bad_length: return "bad_length";
-    case errc::bad_header: return "bad_header";
-    case errc::bad_trailer: return "bad_trailer";
-    case errc::bad_command: return "bad_command";
-    case errc::bad_device: return "bad_device";
-    case errc::unknown_message: return "unknown_message";
-    case errc::value_out_of_range: return "value_out_of_range";
-    case errc::invalid_enum: return "invalid_enum";
-    case errc::bad_padding: return "bad_padding";
-    case errc::reserved_not_zero: return "reserved_not_zero";
-    case errc::missing_field: return "missing_field";
-    case errc::buffer_too_small: return "buffer_too_small";
-    case errc::capacity_exceeded: return "capacity_exceeded";
-    case errc::bad_sequence: return "bad_sequence";
-    case errc::command_changed: return "command_changed";
-    case errc::bad_json: return "bad_json";
-    }
-    return "unknown_error";
-}
-inline constexpr int errc_count = static_cast<int>(errc::bad_json) + 1;
+// Name of an error code as the schema and the Python package spell it
+// (robowire::errc_table, which also gives the count).
+constexpr std::string_view errc_name(errc e) noexcept { return robowire::name_of(e); }
 
 template <class F>
 using element_t = typename F::element_type;
@@ -170,7 +148,16 @@ inline json protocol_entry(std::string_view name, std::string_view summary, json
 }
 
 // The whole document around protocol entries.
-inline json document(json protocols) { return {{"format", format_version}, {"protocols", std::move(protocols)}}; }
+// Every error code (robowire::errc_table): {"code", "name", "text"}.
+inline json errors() {
+    json e = json::array();
+    for (const auto& row : errc_table)
+        e.push_back({{"code", static_cast<int>(row.code)}, {"name", row.name}, {"text", row.text}});
+    return e;
+}
+inline json document(json protocols) {
+    return {{"format", format_version}, {"protocols", std::move(protocols)}, {"errors", errors()}};
+}
 
 // Each protocol: its message lists (the std::variants the dispatchers decode).
 inline json buwizz3_entry() {

@@ -17,9 +17,8 @@ PYBIND11_MODULE(_robowire, m) {
     m.def("schema_json", [](const std::string& protocol) { return robowire::schema::all(protocol).dump(); }, py::arg("protocol") = "",
           "The tables as JSON text (the format of `robowire list --json`).");
     py::dict codes;
-    for (int i = 0; i < robowire::schema::errc_count; ++i) {
-        const auto e = static_cast<robowire::errc>(i);
-        codes[py::str(std::string(robowire::schema::errc_name(e)))] = py::str(std::string(robowire::to_string(e)));
+    for (const auto& row : robowire::errc_table) {
+        codes[py::str(std::string(row.name))] = py::str(std::string(row.text));
     }
     m.attr("error_codes") = codes;
 

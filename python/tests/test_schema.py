@@ -66,7 +66,17 @@ def test_schema_against_the_documents():
 def test_error_codes():
     assert robowire.error_codes["value_out_of_range"] == "value out of range"
     assert robowire.error_codes["bad_length"] == "length matches no form of the message"
-    assert len(robowire.error_codes) == 18 and "ok" not in robowire.error_codes
+    # the codes after bad_json too: the count comes from the library's table
+    assert robowire.error_codes["not_handled"] == "message not handled"
+    assert len(robowire.error_codes) == 19 and "ok" not in robowire.error_codes
+
+
+def test_schema_lists_every_error_code():
+    errors = robowire.schema()["errors"]
+    assert errors[0] == {"code": 0, "name": "ok", "text": "ok"}
+    assert errors[-1] == {"code": 19, "name": "not_handled", "text": "message not handled"}
+    assert [e["code"] for e in errors] == list(range(20))
+    assert {e["name"]: e["text"] for e in errors if e["name"] != "ok"} == robowire.error_codes
 
 
 def test_cli_list_json_is_the_schema(cli):

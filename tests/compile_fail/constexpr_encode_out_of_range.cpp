@@ -1,6 +1,6 @@
 // A constant-expression encode of a value outside its field's range
 // (maneuver::pitch is -100..100).
-// expect: result_holds_error_value_out_of_range
+// expect: result_holds_error.*value_out_of_range
 #include <robowire/navbot.hpp>
 
 #ifdef ROBOWIRE_FIXED

@@ -4,6 +4,7 @@
 #include <robowire/buwizz3/status.hpp>
 #include <robowire/navbot/decode.hpp>
 #include <robowire/navbot/maneuver.hpp>
+#include <robowire/navbot/multiframe.hpp>
 #include <robowire/osp/messages.hpp>
 
 #include <array>
@@ -126,4 +127,54 @@ TEST_CASE("describe_error's length errors fit the README's 96-byte buffer", "[co
     CHECK(longest_length_error(static_cast<robowire::buwizz3::notification*>(nullptr)) < 96);
     CHECK(longest_length_error(static_cast<robowire::osp::message*>(nullptr)) < 96);
     CHECK(longest_length_error(static_cast<robowire::navbot::message*>(nullptr)) < 96);
+}
+
+TEST_CASE("describe_error of a variant decode names the message its key names", "[core][fields]") {
+    namespace bw = robowire::buwizz3;
+    std::array<char, 96> buf{};
+    // status (0x01) cut after 2 bytes: the message is known from byte 0
+    const std::uint8_t status_start[] = {0x01, 0x00};
+    auto n = bw::decode_notification(status_start);
+    REQUIRE(n.error() == error{errc::too_short, 2});
+    CHECK(describe_error<bw::notification>(n.error(), status_start, buf) ==
+          "status: input too short (54 or 68..129 bytes) at byte 2");
+    // a command byte no notification has
+    const std::uint8_t unknown[] = {0x3A, 0x00};
+    n = bw::decode_notification(unknown);
+    REQUIRE(n.error() == error{errc::unknown_message, 0});
+    CHECK(describe_error<bw::notification>(n.error(), unknown, buf) == "unknown key 0x3A at byte 0");
+    // nothing to read the key from
+    n = bw::decode_notification({});
+    REQUIRE(n.error() == error{errc::too_short, 0});
+    CHECK(describe_error<bw::notification>(n.error(), {}, buf) == "input too short at byte 0");
+    // a command: set_data_period (0x32) with 10 ms, below its 20..255 ms
+    const std::uint8_t period[] = {0x32, 0x0A};
+    const auto c = bw::decode_command(period);
+    REQUIRE(c.error() == error{errc::value_out_of_range, 1});
+    CHECK(describe_error<bw::command>(c.error(), period, buf) ==
+          "set_data_period.period_ms: value out of range (valid 20..255 ms) at byte 1");
+    std::array<char, 12> small{};
+    CHECK(describe_error<bw::notification>(n.error(), unknown, small) == "input too sh");  // cut to fit
+}
+
+TEST_CASE("navbot::describe_error names the maneuver or the frame", "[core][fields]") {
+    std::array<char, 96> buf{};
+    // a maneuver (command 0x10) with pitch 0x9B = -101
+    std::array<std::uint8_t, 20> m{0x55, 0xAA, 0x10, 0x00, 0x00, 0, 0, 0x9B};
+    const auto r = nb::decode_frame(m);
+    REQUIRE(r.error() == error{errc::value_out_of_range, 7});
+    CHECK(nb::describe_error(r.error(), m, buf) == "maneuver.pitch: value out of range (valid -100..100 %) at byte 7");
+    // a reassembler outcome: a JSON message (0x02) of 3 frames whose middle frame was lost
+    nb::reassembler<120> reassembly;
+    std::array<std::uint8_t, 20> f{0x55, 0xAA, 0x02, 0x02, 0x00, '{'};
+    REQUIRE(reassembly.push(f).value() == nb::reassembly::need_more);
+    f[3] = 0x00;
+    const auto lost = reassembly.push(f);
+    REQUIRE(lost.error() == error{errc::bad_sequence, 3});
+    CHECK(nb::describe_error(lost.error(), f, buf) == "frame.remaining: frame out of sequence at byte 3");
+    // a bad header: the frame's line, whatever the command
+    f[0] = 0x56;
+    CHECK(nb::describe_error(reassembly.push(f).error(), f, buf) == "frame: bad header byte at byte 0");
+    CHECK(nb::describe_error(error{errc::too_short, 2}, std::span(f).first(2), buf) ==
+          "frame: input too short (20 bytes) at byte 2");
 }

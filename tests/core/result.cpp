@@ -37,6 +37,20 @@ TEST_CASE("result<T> holds a value or an error with an offset", "[core][result]"
     CHECK(to_string(errc::bad_trailer) == "bad trailer byte");
 }
 
+TEST_CASE("to_string and name_of read errc_table", "[core][result]") {
+    STATIC_REQUIRE(to_string(errc::not_handled) == "message not handled");
+    STATIC_REQUIRE(name_of(errc::not_handled) == "not_handled");
+    STATIC_REQUIRE(name_of(errc::bad_json) == "bad_json");
+    STATIC_REQUIRE(to_string(static_cast<errc>(20)) == "unknown error");
+    STATIC_REQUIRE(name_of(static_cast<errc>(20)) == "unknown_error");
+    // every text distinct: a log line names one code
+    for (std::size_t i = 0; i < errc_count; ++i)
+        for (std::size_t j = i + 1; j < errc_count; ++j) {
+            CHECK(errc_table[i].text != errc_table[j].text);
+            CHECK(errc_table[i].name != errc_table[j].name);
+        }
+}
+
 namespace {
 struct meters {
     int value = -1;

@@ -125,7 +125,24 @@ template <>
 struct table_name_differs_from_cxx_name<difference{}> {};
 static_assert(sizeof(table_name_differs_from_cxx_name<first_difference()>) > 0);
 
+// errc_table: each row's name is its code's enumerator, and the value after
+// the last row is no enumerator (an errc added without its row: the pretty
+// name of a value that is no enumerator is "(robowire::errc)N").
+template <std::size_t... I>
+constexpr bool errc_names_match(std::index_sequence<I...>) {
+    return ((errc_table[I].name == cxx_name<errc_table[I].code>) && ...);
+}
+constexpr bool is_enumerator_name(std::string_view s) { return !s.empty() && !(s[0] >= '0' && s[0] <= '9'); }
+static_assert(cxx_name<errc::not_handled> == "not_handled");
+static_assert(!is_enumerator_name(cxx_name<static_cast<errc>(1000)>));
+
 }  // namespace
+
+TEST_CASE("errc_table names every error code, and no code lacks a row", "[names]") {
+    STATIC_REQUIRE(errc_names_match(std::make_index_sequence<errc_count>{}));
+    STATIC_REQUIRE(!is_enumerator_name(cxx_name<static_cast<errc>(errc_count)>));
+    STATIC_REQUIRE(errc_count == 20);  // ok .. not_handled
+}
 
 TEST_CASE("table, field and enum names are the C++ names they stand for", "[names]") {
     STATIC_REQUIRE(name_counts().differ == 0);

@@ -5,13 +5,15 @@
 
 #include "config.hpp"  // first: the C++ version check
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <span>
 #include <string_view>
 #include <type_traits>
-#include <utility>  // std::cmp_less, std::cmp_greater
+#include <utility>  // std::cmp_less, std::cmp_greater, std::index_sequence
+#include <variant>
 
 #include "result.hpp"
 #include "table.hpp"
@@ -163,21 +165,16 @@ inline constexpr auto length_runs_v = [] {
 }();
 }  // namespace detail
 
-// Writes "message.field: <error> (valid min..max unit) at byte N" (or
-// without the field part when no field is at the offset) into `buf`, cut to
-// fit; returns the text written. The range is in raw values: "raw" instead of
-// the unit when the unit scales them. too_short / too_long name no field and
-// give the lengths M takes: "status: input too short (54 or 68..129 bytes)
-// at byte 4"; bad_length names the optional block cut short and gives them
-// too. For logs; no heap.
-template <described M>
-constexpr std::string_view describe_error(const error& e, std::span<char> buf) noexcept {
+namespace detail {
+// Writes text into a caller's buffer, cut to fit (describe_error's lines).
+struct line_writer {
+    std::span<char> buf;
     std::size_t n = 0;
-    const auto put = [&](std::string_view s) {
+    constexpr void put(std::string_view s) noexcept {
         for (char c : s)
             if (n < buf.size()) buf[n++] = c;
-    };
-    const auto put_int = [&](std::int64_t v) {
+    }
+    constexpr void put_int(std::int64_t v) noexcept {
         if (v < 0) put("-");
         std::uint64_t u = v < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
         char digits[20] = {};
@@ -187,45 +184,153 @@ constexpr std::string_view describe_error(const error& e, std::span<char> buf) n
             u /= 10;
         } while (u != 0);
         while (d > 0) put({&digits[--d], 1});
-    };
+    }
+    constexpr void put_hex(std::uint8_t b) noexcept {  // "0x3A"
+        constexpr char digit[] = "0123456789ABCDEF";
+        const char h[4] = {'0', 'x', digit[b >> 4], digit[b & 15]};
+        put({h, 4});
+    }
+    constexpr void put_at(const error& e) noexcept {
+        put(" at byte ");
+        put_int(static_cast<std::int64_t>(e.offset));
+    }
+    constexpr std::string_view text() const noexcept { return {buf.data(), n}; }
+};
+}  // namespace detail
+
+// Writes "message.field: <error> (valid min..max unit) at byte N" (or
+// without the field part when no field is at the offset) into `buf`, cut to
+// fit; returns the text written. The range is in raw values: "raw" instead of
+// the unit when the unit scales them. too_short / too_long name no field and
+// give the lengths M takes: "status: input too short (54 or 68..129 bytes)
+// at byte 4"; bad_length names the optional block cut short and gives them
+// too. For logs; no heap.
+template <described M>
+constexpr std::string_view describe_error(const error& e, std::span<char> buf) noexcept {
+    detail::line_writer w{buf};
     const bool length = e.code == errc::too_short || e.code == errc::too_long;  // about the input, not a field
     const field_info f = field_at<M>(e);
-    put(f.message);
+    w.put(f.message);
     if (f && !length) {
-        put(".");
-        put(f.name);
+        w.put(".");
+        w.put(f.name);
     }
-    put(": ");
-    put(to_string(e.code));
+    w.put(": ");
+    w.put(to_string(e.code));
     if (length || e.code == errc::bad_length) {  // the lengths M's decoder accepts, e.g. " (54 or 68..129 bytes)"
         constexpr auto& runs = detail::length_runs_v<M>;
-        put(" (");
+        w.put(" (");
         for (std::size_t i = 0; i < runs.count; ++i) {
-            if (i > 0) put(i + 1 == runs.count ? " or " : ", ");
-            put_int(static_cast<std::int64_t>(runs.run[i][0]));
+            if (i > 0) w.put(i + 1 == runs.count ? " or " : ", ");
+            w.put_int(static_cast<std::int64_t>(runs.run[i][0]));
             if (runs.run[i][1] != runs.run[i][0]) {
-                put("..");
-                put_int(static_cast<std::int64_t>(runs.run[i][1]));
+                w.put("..");
+                w.put_int(static_cast<std::int64_t>(runs.run[i][1]));
             }
         }
-        put(runs.count == 1 && runs.run[0][0] == 1 && runs.run[0][1] == 1 ? " byte)" : " bytes)");
+        w.put(runs.count == 1 && runs.run[0][0] == 1 && runs.run[0][1] == 1 ? " byte)" : " bytes)");
     }
     if (f && !f.is_enum && (e.code == errc::value_out_of_range)) {
-        put(" (valid ");
-        put_int(f.valid.min);
-        put("..");
-        put_int(f.valid.max);
+        w.put(" (valid ");
+        w.put_int(f.valid.min);
+        w.put("..");
+        w.put_int(f.valid.max);
         if (!f.unit.empty() && f.raw_is_physical) {
-            put(" ");
-            put(f.unit);
+            w.put(" ");
+            w.put(f.unit);
         } else if (!f.unit.empty()) {
-            put(" raw");  // e.g. BuWizz3 power: -127..127 raw is -100..100 %
+            w.put(" raw");  // e.g. BuWizz3 power: -127..127 raw is -100..100 %
         }
-        put(")");
+        w.put(")");
     }
-    put(" at byte ");
-    put_int(static_cast<std::int64_t>(e.offset));
-    return {buf.data(), n};
+    w.put_at(e);
+    return w.text();
+}
+
+namespace detail {
+// The value of M's fixed byte at `offset`; -1: M has none there.
+template <class M>
+constexpr int fixed_at(std::size_t offset) noexcept {
+    for (const auto& b : table_v<M>.fixed)
+        if (b.offset == offset) return b.value;
+    return -1;
+}
+// The index of the alternative of Variant whose fixed bytes at KeyOffsets...
+// are `key`, else of the one with no fixed byte there (it takes every other
+// key, as NAVBOT's frame does); variant_size: none.
+template <class Variant, std::size_t... KeyOffset>
+struct alternative_by_key;
+template <class... M, std::size_t... KeyOffset>
+struct alternative_by_key<std::variant<M...>, KeyOffset...> {
+    template <class T>
+    static constexpr std::array<int, sizeof...(KeyOffset)> keys_of() noexcept {
+        return {fixed_at<T>(KeyOffset)...};
+    }
+    static constexpr std::size_t find(const std::uint8_t (&key)[sizeof...(KeyOffset)]) noexcept {
+        constexpr std::array<std::array<int, sizeof...(KeyOffset)>, sizeof...(M)> keys = {keys_of<M>()...};
+        std::size_t keyless = sizeof...(M);
+        for (std::size_t i = 0; i < sizeof...(M); ++i) {
+            bool same = true, none = true;
+            for (std::size_t k = 0; k < sizeof...(KeyOffset); ++k) {
+                same = same && keys[i][k] == key[k];
+                none = none && keys[i][k] < 0;
+            }
+            if (same) return i;
+            if (none) keyless = i;
+        }
+        return keyless;
+    }
+};
+// describe_error<alternative `index` of Variant>(e, buf); empty for an index past the end.
+template <class Variant, std::size_t... I>
+constexpr std::string_view describe_alternative(std::size_t index, const error& e, std::span<char> buf,
+                                                std::index_sequence<I...>) noexcept {
+    std::string_view out{};
+    (void)((index == I ? (out = describe_error<std::variant_alternative_t<I, Variant>>(e, buf), true) : false) || ...);
+    return out;
+}
+}  // namespace detail
+
+namespace codec {
+// A dispatcher's error (docs/extending.md): the line of the message of
+// Variant that the key bytes of `in` (at KeyOffset..., increasing) name;
+// "unknown key 0x03 0x01 at byte 2" for a key no message has; the error
+// alone ("input too short at byte 0") when `in` does not reach the key.
+template <class Variant, std::size_t... KeyOffset>
+constexpr std::string_view describe_keyed_error(const error& e, std::span<const std::uint8_t> in,
+                                                std::span<char> buf) noexcept {
+    constexpr std::size_t offsets[] = {KeyOffset...};
+    detail::line_writer w{buf};
+    if (in.size() <= offsets[sizeof offsets / sizeof offsets[0] - 1]) {
+        w.put(to_string(e.code));
+        w.put_at(e);
+        return w.text();
+    }
+    const std::uint8_t key[] = {in[KeyOffset]...};
+    const std::size_t index = detail::alternative_by_key<Variant, KeyOffset...>::find(key);
+    if (index < std::variant_size_v<Variant>)
+        return detail::describe_alternative<Variant>(index, e, buf,
+                                                     std::make_index_sequence<std::variant_size_v<Variant>>{});
+    w.put(e.code == errc::unknown_message ? std::string_view("unknown key") : to_string(e.code));
+    for (const std::uint8_t k : key) {
+        w.put(" ");
+        w.put_hex(k);
+    }
+    w.put_at(e);
+    return w.text();
+}
+}  // namespace codec
+
+// describe_error for the error of decode_variant<Variant, KeyOffset>(in)
+// (also decode_command and decode_notification): the line of the message
+// whose key in[KeyOffset] names ("status: input too short (54 or 68..129
+// bytes) at byte 4"); "unknown key 0x3A at byte 0" when no message has that
+// key; the error alone ("input too short at byte 0") when `in` does not
+// reach the key. Pass the input the error came from.
+template <class Variant, std::size_t KeyOffset = 0>
+requires(std::variant_size_v<Variant> > 0) constexpr std::string_view
+    describe_error(const error& e, std::span<const std::uint8_t> in, std::span<char> buf) noexcept {
+    return codec::describe_keyed_error<Variant, KeyOffset>(e, in, buf);
 }
 
 }  // namespace robowire

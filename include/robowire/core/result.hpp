@@ -15,7 +15,7 @@
 #include <new>  // placement new
 #include <string_view>
 #include <type_traits>
-#include <utility>  // std::in_place_t, std::move
+#include <utility>  // std::in_place_t, std::move, std::index_sequence
 
 namespace robowire {
 
@@ -40,32 +40,60 @@ enum class errc : std::uint16_t {
     bad_sequence,        // multi-frame: frame out of order
     command_changed,     // multi-frame: continuation frame with another command
     bad_json,            // text is not one complete JSON object (unbalanced braces, open string)
+    not_handled,         // device role: a valid message that the handler takes no overload for
 };
 
-// Short, stable, lower-case description of an error code.
+// One row per error code, in the enum's order: the code, its name as the
+// tools, the JSON schema and the Python package spell it, and its text
+// (short, stable, lower case). Every list of the codes reads this table.
+struct errc_info {
+    errc code;
+    std::string_view name;
+    std::string_view text;
+};
+inline constexpr errc_info errc_table[] = {
+    {errc::ok, "ok", "ok"},
+    {errc::too_short, "too_short", "input too short"},
+    {errc::too_long, "too_long", "input too long"},
+    {errc::bad_length, "bad_length", "length matches no form of the message"},
+    {errc::bad_header, "bad_header", "bad header byte"},
+    {errc::bad_trailer, "bad_trailer", "bad trailer byte"},
+    {errc::bad_command, "bad_command", "wrong command byte for this message"},
+    {errc::bad_device, "bad_device", "wrong device byte for this message"},
+    {errc::unknown_message, "unknown_message", "unknown message"},
+    {errc::value_out_of_range, "value_out_of_range", "value out of range"},
+    {errc::invalid_enum, "invalid_enum", "value is not a valid code"},
+    {errc::bad_padding, "bad_padding", "non-zero byte after text terminator"},
+    {errc::reserved_not_zero, "reserved_not_zero", "reserved byte is not zero"},
+    {errc::missing_field, "missing_field", "optional block present without the one before it"},
+    {errc::buffer_too_small, "buffer_too_small", "output buffer too small"},
+    {errc::capacity_exceeded, "capacity_exceeded", "capacity exceeded"},
+    {errc::bad_sequence, "bad_sequence", "frame out of sequence"},
+    {errc::command_changed, "command_changed", "command changed inside a multi-frame message"},
+    {errc::bad_json, "bad_json", "not one complete JSON object"},
+    {errc::not_handled, "not_handled", "message not handled"},
+};
+// Number of error codes, ok included.
+inline constexpr std::size_t errc_count = sizeof errc_table / sizeof errc_table[0];
+namespace detail {
+constexpr bool errc_table_in_order() noexcept {
+    for (std::size_t i = 0; i < errc_count; ++i)
+        if (static_cast<std::size_t>(errc_table[i].code) != i) return false;
+    return true;
+}
+static_assert(errc_table_in_order(), "errc_table: row i must be the code whose value is i");
+}  // namespace detail
+
+// Short, stable, lower-case description of an error code ("unknown error"
+// for a value that is no code).
 constexpr std::string_view to_string(errc e) noexcept {
-    switch (e) {
-    case errc::ok: return "ok";
-    case errc::too_short: return "input too short";
-    case errc::too_long: return "input too long";
-    case errc::bad_length: return "length matches no form of the message";
-    case errc::bad_header: return "bad header byte";
-    case errc::bad_trailer: return "bad trailer byte";
-    case errc::bad_command: return "wrong command byte for this message";
-    case errc::bad_device: return "wrong device byte for this message";
-    case errc::unknown_message: return "unknown message";
-    case errc::value_out_of_range: return "value out of range";
-    case errc::invalid_enum: return "value is not a valid code";
-    case errc::bad_padding: return "non-zero byte after text terminator";
-    case errc::reserved_not_zero: return "reserved byte is not zero";
-    case errc::missing_field: return "optional block present without the one before it";
-    case errc::buffer_too_small: return "output buffer too small";
-    case errc::capacity_exceeded: return "capacity exceeded";
-    case errc::bad_sequence: return "frame out of sequence";
-    case errc::command_changed: return "command changed inside a multi-frame message";
-    case errc::bad_json: return "not one complete JSON object";
-    }
-    return "unknown error";
+    const auto i = static_cast<std::size_t>(e);
+    return i < errc_count ? errc_table[i].text : "unknown error";
+}
+// The code's name ("value_out_of_range"; "unknown_error" for a value that is no code).
+constexpr std::string_view name_of(errc e) noexcept {
+    const auto i = static_cast<std::size_t>(e);
+    return i < errc_count ? errc_table[i].name : "unknown_error";
 }
 
 // An error code and the byte offset it refers to (0..65535: offsets past that
@@ -137,48 +165,18 @@ inline constexpr bool access_noexcept = true;
 
 // Not constexpr: a wrong access inside a constant expression (e.g. .value()
 // of a constexpr encode given an out-of-range value) stops the compiler at
-// the call of the function named for the error.
-inline void result_holds_error_too_short() noexcept {}
-inline void result_holds_error_too_long() noexcept {}
-inline void result_holds_error_bad_length() noexcept {}
-inline void result_holds_error_bad_header() noexcept {}
-inline void result_holds_error_bad_trailer() noexcept {}
-inline void result_holds_error_bad_command() noexcept {}
-inline void result_holds_error_bad_device() noexcept {}
-inline void result_holds_error_unknown_message() noexcept {}
-inline void result_holds_error_value_out_of_range() noexcept {}
-inline void result_holds_error_invalid_enum() noexcept {}
-inline void result_holds_error_bad_padding() noexcept {}
-inline void result_holds_error_reserved_not_zero() noexcept {}
-inline void result_holds_error_missing_field() noexcept {}
-inline void result_holds_error_buffer_too_small() noexcept {}
-inline void result_holds_error_capacity_exceeded() noexcept {}
-inline void result_holds_error_bad_sequence() noexcept {}
-inline void result_holds_error_command_changed() noexcept {}
-inline void result_holds_error_bad_json() noexcept {}
+// the call of this function, whose template argument names the error
+// ("result_holds_error<robowire::errc::value_out_of_range>").
+template <errc Code>
+inline void result_holds_error() noexcept {}
 inline void result_holds_value_not_error() noexcept {}
+template <std::size_t... I>
+constexpr void compile_time_bad_access(errc code, std::index_sequence<I...>) noexcept {
+    (void)((code == errc_table[I].code ? (result_holds_error<errc_table[I].code>(), true) : false) || ...);
+}
 constexpr void compile_time_bad_access(errc code) noexcept {
-    switch (code) {
-    case errc::ok: result_holds_value_not_error(); break;
-    case errc::too_short: result_holds_error_too_short(); break;
-    case errc::too_long: result_holds_error_too_long(); break;
-    case errc::bad_length: result_holds_error_bad_length(); break;
-    case errc::bad_header: result_holds_error_bad_header(); break;
-    case errc::bad_trailer: result_holds_error_bad_trailer(); break;
-    case errc::bad_command: result_holds_error_bad_command(); break;
-    case errc::bad_device: result_holds_error_bad_device(); break;
-    case errc::unknown_message: result_holds_error_unknown_message(); break;
-    case errc::value_out_of_range: result_holds_error_value_out_of_range(); break;
-    case errc::invalid_enum: result_holds_error_invalid_enum(); break;
-    case errc::bad_padding: result_holds_error_bad_padding(); break;
-    case errc::reserved_not_zero: result_holds_error_reserved_not_zero(); break;
-    case errc::missing_field: result_holds_error_missing_field(); break;
-    case errc::buffer_too_small: result_holds_error_buffer_too_small(); break;
-    case errc::capacity_exceeded: result_holds_error_capacity_exceeded(); break;
-    case errc::bad_sequence: result_holds_error_bad_sequence(); break;
-    case errc::command_changed: result_holds_error_command_changed(); break;
-    case errc::bad_json: result_holds_error_bad_json(); break;
-    }
+    if (code == errc::ok) result_holds_value_not_error();
+    else compile_time_bad_access(code, std::make_index_sequence<errc_count>{});
 }
 
 // Run-time reaction to a wrong access: throw, or the handler, or trap.

@@ -9,6 +9,7 @@
 #include <utility>
 #include <variant>
 
+#include "../core/fields.hpp"
 #include "frame.hpp"
 #include "maneuver.hpp"
 
@@ -80,5 +81,17 @@ template <class Message = message>
     return impl::decode_command<Message, 0>(*f, in);
 }
 }  // namespace ROBOWIRE_MODE_NAMESPACE
+
+// describe_error for a NAVBOT error (decode_frame, reassembler::push of
+// frame bytes): the line of the message whose command byte `in` carries, the
+// frame's for every command no message claims ("frame.remaining: frame out
+// of sequence at byte 3"); the frame's too when `in` does not reach the
+// command. Pass the input the error came from; cut to fit `buf`.
+template <class Message = message>
+constexpr std::string_view describe_error(const error& e, std::span<const std::uint8_t> in,
+                                          std::span<char> buf) noexcept {
+    if (in.size() < 3) return robowire::describe_error<frame>(e, buf);
+    return codec::describe_keyed_error<Message, 2>(e, in, buf);
+}
 
 }  // namespace robowire::navbot

@@ -14,6 +14,7 @@
 #include <variant>
 
 #include "../core/dispatch.hpp"
+#include "../core/fields.hpp"
 #include "messages.hpp"
 
 namespace robowire::osp {
@@ -186,10 +187,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr error encode_fields(const M& m, std::span<std::
     if (codec::check_fields(m, err)) codec::store_fields(m, out);
     return err;
 }
-// b becomes the frame of a message with key DEV << 8 | CMD and no parameters.
-ROBOWIRE_SIZE_NOINLINE constexpr void write_frame(bytes<frame_size>& b, std::uint16_t key) noexcept {
-    codec::set_written_size(b, frame_size);
-    std::uint8_t* out = b.data();
+// out[0..9] becomes the frame of a message with key DEV << 8 | CMD and no parameters.
+ROBOWIRE_SIZE_NOINLINE constexpr void write_frame(std::uint8_t* out, std::uint16_t key) noexcept {
     out[0] = start1;
     out[1] = start2;
     out[2] = static_cast<std::uint8_t>(key >> 8);
@@ -197,6 +196,49 @@ ROBOWIRE_SIZE_NOINLINE constexpr void write_frame(bytes<frame_size>& b, std::uin
     out[4] = out[5] = out[6] = out[7] = 0;
     out[8] = end1;
     out[9] = end2;
+}
+// b becomes the frame of a message with key DEV << 8 | CMD and no parameters.
+ROBOWIRE_ALWAYS_INLINE constexpr void write_frame(bytes<frame_size>& b, std::uint16_t key) noexcept {
+    codec::set_written_size(b, frame_size);
+    write_frame(b.data(), key);
+}
+// Checks the fields of `answer`, then writes its whole frame into out[0..9]:
+// out is not touched on an error.
+template <class M>
+ROBOWIRE_ALWAYS_INLINE constexpr error write_answer(const M& answer, std::uint8_t* out) noexcept {
+    static_assert(plain_frame<M>(), "osp: a message must be one 10-byte frame with the markers, DEV and CMD fixed");
+    error err{};
+    if (!codec::check_fields(answer, err)) return err;
+    write_frame(out, key_of<M>());
+    codec::store_fields(answer, std::span<std::uint8_t, frame_size>(out, frame_size));
+    return err;
+}
+// Calls handler(msg) for the message m holds and on_answer(a) for the answer
+// a it returns, if any (see serve). not_handled (offset 2) when the handler
+// has no overload for that message.
+template <class Handler, class OnAnswer>
+constexpr error call_handler(Handler& handler, const message& m, OnAnswer&& on_answer) {
+    error err{};
+    codec::visit_held(m, [&](const auto& msg) {
+        using M = std::remove_cvref_t<decltype(msg)>;
+        if constexpr (!std::is_invocable_v<Handler&, const M&>) {
+            err = fail(errc::not_handled, 2);
+        } else {
+            using R = std::invoke_result_t<Handler&, const M&>;
+            if constexpr (std::is_void_v<R>) {
+                handler(msg);
+            } else if constexpr (requires(const R& a) {
+                                     a.has_value();
+                                     *a;
+                                 }) {
+                const R a = handler(msg);
+                if (a) err = on_answer(*a);
+            } else {
+                err = on_answer(handler(msg));
+            }
+        }
+    });
+    return err;
 }
 }  // namespace ROBOWIRE_MODE_NAMESPACE
 }  // namespace impl
@@ -270,8 +312,10 @@ template <class Message = message>
 // Device role. Decodes `request` and calls handler(msg) for the message it
 // holds, if the handler accepts that type. The handler returns void (no
 // answer), a message (the answer), or std::optional of a message.
-// Returns the encoded answer, nullopt when there is none, or an error:
-// unknown_message when the frame is valid but the handler does not take it.
+// Returns the encoded answer, nullopt when there is none, or an error: the
+// request's decode error; not_handled (offset 2) when the frame is valid but
+// the handler has no overload for its message (another device's frame on a
+// shared bus); the answer's field error. serve_to writes into your buffer instead.
 template <class Handler>
 [[nodiscard]] constexpr result<std::optional<bytes<frame_size>>> serve(std::span<const std::uint8_t> request,
                                                                        Handler&& handler) {
@@ -281,33 +325,61 @@ template <class Handler>
         r = codec::unchecked_error(d);
         return r;
     }
-    const auto reply = [&r](const auto& answer) {                         // encoded straight into r
-        auto& out = codec::unchecked_value(r).emplace(codec::unset_t{});  // write_frame fills it
-        impl::write_frame(out, impl::key_of<std::remove_cvref_t<decltype(answer)>>());
-        if (const error e = impl::encode_fields(answer, std::span<std::uint8_t, frame_size>(out.data(), frame_size)))
-            r = e;
-    };
-    codec::visit_held(codec::unchecked_value(d), [&](const auto& msg) {
-        using M = std::remove_cvref_t<decltype(msg)>;
-        if constexpr (!std::is_invocable_v<Handler&, const M&>) {
-            r = fail(errc::unknown_message, 2);
-        } else {
-            using R = std::invoke_result_t<Handler&, const M&>;
-            if constexpr (std::is_void_v<R>) {
-                handler(msg);
-            } else if constexpr (requires(const R& a) {
-                                     a.has_value();
-                                     *a;
-                                 }) {
-                const R a = handler(msg);
-                if (a) reply(*a);
-            } else {
-                reply(handler(msg));
-            }
-        }
+    const error e = impl::call_handler(handler, codec::unchecked_value(d), [&r](const auto& answer) {
+        auto& out = codec::unchecked_value(r).emplace(codec::unset_t{});  // encoded straight into r
+        codec::set_written_size(out, frame_size);
+        return impl::write_answer(answer, out.data());
     });
+    if (e.code != errc::ok) r = e;
     return r;
 }
+
+// Device role, zero-copy: as serve, but the answer's frame is written into
+// `out` (a UART transmit buffer; at least 10 bytes). Returns the bytes
+// written: 10 for an answer, 0 when there is nothing to send. Errors: as
+// serve (not_handled at offset 2 for a valid frame the handler does not
+// take), and buffer_too_small (offset 10) when `out` is shorter than a
+// frame, found before the request is decoded (the handler is not called).
+// On an error `out` is left as it was.
+template <class Handler>
+[[nodiscard]] constexpr result<std::size_t> serve_to(Handler&& handler, std::span<const std::uint8_t> request,
+                                                     std::span<std::uint8_t> out) {
+    if (out.size() < frame_size) return fail(errc::buffer_too_small, frame_size);
+    auto d = decode(codec::deferred<Handler>(request));  // instantiated with serve_to
+    if (!d) return codec::unchecked_error(d);
+    std::size_t written = 0;
+    const error e = impl::call_handler(handler, codec::unchecked_value(d), [&](const auto& answer) {
+        const error a = impl::write_answer(answer, out.data());
+        if (a.code == errc::ok) written = frame_size;
+        return a;
+    });
+    if (e.code != errc::ok) return e;
+    return written;
+}
 }  // namespace ROBOWIRE_MODE_NAMESPACE
+
+// describe_error for an OSP error (osp::decode, serve, serve_to, a scanned
+// frame): the line of the message whose DEV and CMD `in` carries
+// ("voltage: input too short (10 bytes) at byte 9", "set_angle: message not
+// handled at byte 2"); "unknown key 0x03 0x01 at byte 2" for a DEV/CMD pair
+// no message has; osp::frame's line when `in` does not reach CMD. Pass the
+// input the error came from; cut to fit `buf`.
+template <class Message = message>
+constexpr std::string_view describe_error(const error& e, std::span<const std::uint8_t> in,
+                                          std::span<char> buf) noexcept {
+    if (in.size() < 4) return robowire::describe_error<osp::frame>(e, buf);
+    return codec::describe_keyed_error<Message, 2, 3>(e, in, buf);
+}
+// The same for the error of osp::decode's result, from the DEV and CMD it
+// keeps (frame()); osp::frame's line when the markers or the length were wrong.
+template <class Message = message>
+constexpr std::string_view describe_error(const decode_result& d, std::span<char> buf) noexcept {
+    const error e = d.code() == errc::ok ? error{} : codec::unchecked_error(d);
+    if (!d.frame()) return robowire::describe_error<osp::frame>(e, buf);
+    const auto& f = *d.frame();
+    const std::uint8_t in[frame_size] = {start1,      start2,      f.device,    f.command, f.params[0],
+                                         f.params[1], f.params[2], f.params[3], end1,      end2};
+    return codec::describe_keyed_error<Message, 2, 3>(e, in, buf);
+}
 
 }  // namespace robowire::osp
