@@ -80,6 +80,24 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_scalar(E& v, std::span<const std::u
         return true;
     }
 }
+// A text field of N bytes at `off`: its length (up to the first NUL), and
+// whether every byte after it is a NUL (else bad_padding at the first that is not).
+template <std::size_t N>
+ROBOWIRE_ALWAYS_INLINE constexpr std::size_t text_length(std::span<const std::uint8_t> in, std::size_t off) noexcept {
+    std::size_t len = 0;
+    while (len < N && in[off + len] != 0) ++len;
+    return len;
+}
+template <std::size_t N>
+ROBOWIRE_ALWAYS_INLINE constexpr bool text_padding_ok(std::span<const std::uint8_t> in, std::size_t off,
+                                                      std::size_t len, error& err) noexcept {
+    for (std::size_t i = len; i < N; ++i)
+        if (in[off + i] != 0) [[unlikely]] {
+            err = codec::fail_at(errc::bad_padding, off + i);
+            return false;
+        }
+    return true;
+}
 template <class M, std::size_t I, class E, class Err>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::uint8_t> in, std::size_t off,
                                                      Err& err) noexcept;
@@ -222,14 +240,9 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
         }
     } else if constexpr (W::kind == wire_kind::text) {
         constexpr std::size_t n = text_traits<E>::size;
-        std::size_t len = 0;
-        while (len < n && in[off + len] != 0) ++len;
+        const std::size_t len = text_length<n>(in, off);
         if constexpr (checks_v<Err>) {
-            for (std::size_t i = len; i < n; ++i)
-                if (in[off + i] != 0) {
-                    err = codec::fail_at(errc::bad_padding, off + i);
-                    return false;
-                }
+            if (!text_padding_ok<n>(in, off, len, err)) return false;
         }
         if (!std::is_constant_evaluated()) {  // straight from the input (char may view any bytes)
             v.assign(std::string_view(reinterpret_cast<const char*>(in.data() + off), len));
@@ -264,14 +277,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(std::span<const std::uint8_t
         return check_record<E>(in, off, err, std::make_index_sequence<field_count_v<E>>{});
     } else if constexpr (W::kind == wire_kind::text) {
         constexpr std::size_t n = text_traits<E>::size;
-        std::size_t len = 0;
-        while (len < n && in[off + len] != 0) ++len;
-        for (std::size_t i = len; i < n; ++i)
-            if (in[off + i] != 0) [[unlikely]] {
-                err = codec::fail_at(errc::bad_padding, off + i);
-                return false;
-            }
-        return true;
+        return text_padding_ok<n>(in, off, text_length<n>(in, off), err);
     } else if constexpr (W::kind == wire_kind::tail || W::kind == wire_kind::f32le) {
         return true;
     } else {
