@@ -92,13 +92,18 @@ function scalar(v, path) {
       throw new TypeError(`encode: ${path}: a number, boolean or string expected, not ${v === null ? 'null' : typeof v}`);
   }
 }
+// A key decode adds (physical values, flag bits), which encode does not read.
+function derived(name, fields) {
+  return name.endsWith('_bits') || name.endsWith('_physical') || fields.some((x) => x.name === `${name}_raw`);
+}
 // A record's values in the tool's flattened order (keys not given: 0).
 function flattenRecord(obj, fields, path, out) {
   if (obj === null || typeof obj !== 'object' || Array.isArray(obj))
     throw new TypeError(`encode: ${path}: an object expected`);
   const known = new Set(fields.map((f) => f.name));
   for (const k of Object.keys(obj))
-    if (!known.has(k)) throw new RobowireError(`unknown field ${path}.${k} (fields: ${[...known].join(', ')})`);
+    if (!known.has(k) && !derived(k, fields))
+      throw new RobowireError(`unknown field ${path}.${k} (fields: ${[...known].join(', ')})`);
   for (const f of fields) flattenField(obj[f.name], f, `${path}.${f.name}`, out, true);
 }
 function flattenField(v, f, path, out, inRecord) {
@@ -139,7 +144,7 @@ function encode(message, fields = {}) {
       if (v === undefined || v === null) continue;  // absent optional block
       const f = layout.find((x) => x.name === name);
       if (f === undefined) {  // decode's physical values and _bits are not read; other names are errors
-        if (name.endsWith('_bits') || name.endsWith('_physical') || layout.some((x) => x.name === `${name}_raw`)) continue;
+        if (derived(name, layout)) continue;
         pairs.push(`${name}=`);
         continue;
       }
