@@ -65,14 +65,16 @@ export function generateDecoder(m) {
 }
 
 export function generateEncoder(m) {
-  let body = `const out=new Uint8Array(${m.min_size});const dv=new DataView(out.buffer);`;
+  let body = `const out=new Uint8Array(${m.min_size});`;
+  if (m.fields.some((f) => f.element_size > 1)) body += 'const dv=new DataView(out.buffer);';
   body += m.fixed.map((x) => `out[${x.offset}]=${x.value};`).join('');
   for (const f of m.fields) {
     unsupported(f);
     if (f.type === 'record' || f.optional) throw new Error(`generate: ${f.name}: records not generated for encode`);
     const check = (v, o) => (f.valid
       ? `if(!Number.isInteger(${v})||${v}<${f.valid.min}||${v}>${f.valid.max})throw err('value_out_of_range',${o});` : '');
-    const put = (v, o) => `${check(v, o)}dv.${setter[f.type]}(${o},${v},true);`;
+    const put = (v, o) => `${check(v, o)}` +
+      (f.element_size === 1 ? `out[${o}]=${v}&255;` : `dv.${setter[f.type]}(${o},${v},true);`);
     const name = JSON.stringify(f.name);
     if (f.array) {
       body += `{const a=fields[${name}]??${JSON.stringify(new Array(f.count).fill(0))};if(a.length!==${f.count})throw err('bad_length',${f.offset});`;

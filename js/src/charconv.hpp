@@ -3,10 +3,9 @@
 // writer (tools/emit.hpp) uses them. Forced into each translation unit of the
 // WebAssembly build (js/build, -include), from printf and strtod (musl:
 // correctly rounded), with the standard's results:
-//   to_chars(f, l, v)                 shortest round-trip digits, fixed or scientific, whichever is shorter (fixed on a tie)
-//   to_chars(f, l, v, scientific)     shortest round-trip digits, d.ddde+XX
-//   to_chars(f, l, v, general, p)     printf's %.<p>g
-//   from_chars(f, l, v)               strtod
+//   to_chars(f, l, v)                 shortest round-trip digits, fixed or scientific, whichever is shorter (fixed on a
+//   tie) to_chars(f, l, v, scientific)     shortest round-trip digits, d.ddde+XX to_chars(f, l, v, general, p) printf's
+//   %.<p>g from_chars(f, l, v)               strtod
 #pragma once
 
 #include <charconv>

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <cstring>
 #include <span>
-#include <type_traits>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -109,7 +109,7 @@ int rw_buwizz3_decode(const std::uint8_t* in, std::size_t size, int direction) {
     static cli::output out(cli::format_kind::json, false);
     last = result{};
     const std::span<const std::uint8_t> bytes(in, size);
-    const auto d = direction == 1 ? cli::direction::command
+    const auto d = direction == 1   ? cli::direction::command
                    : direction == 2 ? cli::direction::notification
                                     : cli::direction::any;
     const cli::outcome o = cli::buwizz3_protocol().decode(bytes, d, out, cli::record_meta{});
@@ -123,7 +123,8 @@ int rw_buwizz3_decode(const std::uint8_t* in, std::size_t size, int direction) {
     last.text = o.error;
     if (size > 0 && o.status == cli::exit_bad_input) {
         const bool cmd = d == cli::direction::command || (d == cli::direction::any && uses<bw::command>(in[0]));
-        const bool note = d == cli::direction::notification || (d == cli::direction::any && uses<bw::notification>(in[0]));
+        const bool note =
+            d == cli::direction::notification || (d == cli::direction::any && uses<bw::notification>(in[0]));
         if (cmd && !note) {
             if (const auto r = bw::decode_command(bytes); !r) error_of<bw::command>(bytes, r.error());
         } else if (note && !cmd) {
