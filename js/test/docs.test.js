@@ -31,3 +31,14 @@ test('the first example', () => {
     fields: { period_ms: 50, period_ms_physical: { value: 50, unit: 'ms' } },
   });
 });
+
+test('the number of frames of the differential check', async () => {
+  const { readdirSync, statSync } = await import('node:fs');
+  const corpus = (d) => {
+    const dir = new URL(`../../fuzz/corpus/${d}/`, import.meta.url);
+    return readdirSync(dir).filter((f) => statSync(new URL(f, dir)).size > 0).length;
+  };
+  const n = corpus('buwizz3_command') + corpus('buwizz3_notification');
+  assert.match(doc, new RegExp(`\\(${n} frames\\)`));
+  assert.match(doc, new RegExp(`${n + 20000} frames, 0 disagreements`));
+});
