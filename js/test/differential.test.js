@@ -1,8 +1,8 @@
 // Every file of the BuWizz3 fuzz corpora (fuzz/corpus/buwizz3_command,
 // buwizz3_notification) decoded by the package and by the command-line tool
 // (ROBOWIRE_CLI, `decode buwizz3 --file --json`): the same message object or
-// the same error line; then 10000 seeded random frames per direction (byte 0
-// one of the protocol's command bytes or any byte, 0..140 bytes long).
+// the same error line; then 10000 seeded random frames per direction (a
+// message's command byte and one of its valid lengths, mostly; random bytes).
 // Skipped when ROBOWIRE_CLI is not set.
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -47,8 +47,6 @@ function agree(inputs, direction, what) {
   console.log(`${what}: ${inputs.length} frames, ${messages} messages, ${inputs.length - messages} errors, 0 disagreements`);
 }
 
-const keys = [0x01, 0x20, 0x21, 0x22, 0x23, 0x30, 0x31, 0x32, 0x33, 0x34, 0x35, 0x36, 0x37, 0x38, 0x40, 0x50, 0x51,
-  0x52, 0x53, 0xA1, 0xAC];
 for (const direction of ['command', 'notification']) {
   test(`fuzz/corpus/buwizz3_${direction}: the package agrees with the tool`, { skip: !cli && 'ROBOWIRE_CLI not set' }, () => {
     const dir = join(corpora, `buwizz3_${direction}`);
@@ -58,12 +56,19 @@ for (const direction of ['command', 'notification']) {
   test(`10000 random ${direction} frames: the package agrees with the tool`, { skip: !cli && 'ROBOWIRE_CLI not set' }, () => {
     let x = direction === 'command' ? 0x2545F491 : 0x9E3779B9;  // xorshift32, fixed seeds
     const next = () => ((x ^= x << 13), (x ^= x >>> 17), (x ^= x << 5), x >>> 0);
+    // the direction's messages and their valid lengths, from the tool's tables
+    const schema = JSON.parse(execFileSync(cli, ['list', '--json', 'buwizz3'], { encoding: 'utf8' }));
+    const messages = schema.protocols[0].messages.filter((m) => m.direction === direction);
     const inputs = [];
     for (let i = 0; i < 10000; ++i) {
-      const b = new Uint8Array(1 + (next() % 140));
+      const m = messages[next() % messages.length];
+      const [lo, hi] = m.lengths[next() % m.lengths.length];
+      let n = lo + (next() % (hi - lo + 1));
+      if (next() % 8 === 0) n = next() % 140;  // any length
+      const b = new Uint8Array(Math.max(n, 1));
       for (let j = 0; j < b.length; ++j) b[j] = next() & 0xff;
-      b[0] = next() % 8 ? keys[next() % keys.length] : b[0];
-      if (next() % 4 === 0) for (let j = 1; j < b.length; ++j) b[j] &= 0x3f;  // more values in range
+      if (next() % 8) b[0] = m.key[0];  // else any first byte
+      if (next() % 2) for (let j = 1; j < b.length; ++j) b[j] &= 0x3f;  // more values in range
       inputs.push(b);
     }
     agree(inputs, direction, `random ${direction} frames`);
