@@ -27,12 +27,18 @@ const std::vector<std::string> no_notes;
 outcome decode_as(std::span<const std::uint8_t> in, direction d, output& out, const record_meta& meta) {
     if (d == direction::command) {
         const auto r = bw::decode_command(in);
-        if (!r) return failure(exit_bad_input, describe_decode_error<bw::command>(in, r.error()));
+        char buf[160];
+        if (!r)
+            return decode_failure<bw::command>(robowire::describe_error<bw::command>(r.error(), in, buf), in,
+                                               r.error());
         emit::variant_message(out, meta, "buwizz3", *r, no_notes);
         return {};
     }
     const auto r = bw::decode_notification(in);
-    if (!r) return failure(exit_bad_input, describe_decode_error<bw::notification>(in, r.error()));
+    char buf[160];
+    if (!r)
+        return decode_failure<bw::notification>(robowire::describe_error<bw::notification>(r.error(), in, buf), in,
+                                                r.error());
     emit::variant_message(out, meta, "buwizz3", *r, no_notes);
     return {};
 }
@@ -52,17 +58,16 @@ outcome decode(std::span<const std::uint8_t> in, direction d, output& out, const
     const auto n = by_command<bw::notification>(in[0], in.size(), note_fits);
     if (d != direction::any) {
         outcome o = decode_as(in, d, out, meta);
-        if (d == direction::command && !c && n)
-            o.error += " (" + hex2(in[0]) + " is the notification " + n->first + ")";
-        if (d == direction::notification && !n && c)
-            o.error += " (" + hex2(in[0]) + " is the command " + c->first + ")";
+        if (d == direction::command && !c && n) o.hints.push_back(hex2(in[0]) + " is the notification " + n->first);
+        if (d == direction::notification && !n && c) o.hints.push_back(hex2(in[0]) + " is the command " + c->first);
         return o;
     }
     if (c && !n) return decode_as(in, direction::command, out, meta);
     if (n && !c) return decode_as(in, direction::notification, out, meta);
     if (!c && !n) {
-        return failure(exit_bad_input, "unknown message at byte 0: " + hex2(in[0]) +
-                                           " is no BuWizz3 command or notification (robowire list buwizz3)");
+        outcome o = decode_as(in, direction::command, out, meta);
+        o.hints.push_back(hex2(in[0]) + " is no BuWizz3 command or notification (robowire list buwizz3)");
+        return o;
     }
     // both directions use this command byte: the length decides
     if (cmd_fits && !note_fits) return decode_as(in, direction::command, out, meta);
@@ -73,7 +78,7 @@ outcome decode(std::span<const std::uint8_t> in, direction d, output& out, const
     if (cmd_fits && note_fits)
         return failure(exit_usage, which + ": add --direction command or --direction notification");
     outcome o = decode_as(in, direction::command, out, meta);
-    o.error += " (" + which + ")";
+    o.hints.push_back(which);
     return o;
 }
 

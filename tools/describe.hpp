@@ -193,22 +193,13 @@ inline std::string raw_value_text(const location& loc, std::span<const std::uint
     return v + " (" + h + ")";
 }
 
-// "value out of range at byte 1: set_data_period.period_ms (valid 20..255 (ms))"
+// robowire::describe_error's line for error e of message M ("maneuver.pitch:
+// value out of range (valid -100..100 %) at byte 7"): the text C++ and
+// Python give for the same error.
 template <class M>
-std::string describe_error(const robowire::error& e, std::string_view got = {}) {
-    std::string s(robowire::to_string(e.code));
-    s += " at byte " + std::to_string(e.offset);
-    const auto loc = locate<M>(e.offset);
-    if (loc && e.code == errc::missing_field) {
-        s += ": give " + loc->path.substr(0, loc->path.find_first_of("[.")) + " too";
-    } else if (loc) {
-        s += ": " + std::string(robowire::table_v<M>.name) + "." + loc->path;
-        if (!got.empty()) s += " = " + std::string(got);
-        if (!loc->valid.empty()) s += ", valid " + loc->valid;
-    } else if (!got.empty()) {
-        s += " (" + std::string(got) + ")";
-    }
-    return s;
+std::string core_line(const robowire::error& e) {
+    char buf[160];
+    return std::string(robowire::describe_error<M>(e, buf));
 }
 // Does `in` carry M's fixed bytes (as far as it goes)?
 template <class M>
@@ -217,28 +208,33 @@ bool carries_fixed_bytes(std::span<const std::uint8_t> in) {
         if (b.offset < in.size() && in[b.offset] != b.value) return false;
     return !robowire::table_v<M>.fixed.empty();
 }
-// A decode error of variant V, naming the message and field when the bytes say which.
-// Length errors name the message's valid lengths instead of a field.
+// A decode error of variant V: `line` (the protocol's describe_error line for
+// it), and a hint with what the line leaves out: the value at the offset
+// ("period_ms at byte 1 is 10 (0x0A)", an enum's codes too) or the length
+// given ("2 bytes given").
 template <class V>
-std::string describe_decode_error(std::span<const std::uint8_t> in, const robowire::error& e) {
-    std::string s;
+outcome decode_failure(std::string_view line, std::span<const std::uint8_t> in, const robowire::error& e) {
+    outcome o;
+    o.status = exit_bad_input;
+    o.error = line;
     const bool length = e.code == errc::too_short || e.code == errc::too_long || e.code == errc::bad_length;
+    if (length) {
+        o.hints.push_back(plural(in.size(), "byte", "bytes") + " given");
+        return o;
+    }
+    if (e.offset >= in.size() || e.code == errc::unknown_message) return o;
+    bool done = false;
     for_each_alternative<V>([&](auto t) {
         using M = typename decltype(t)::type;
-        if (!s.empty() || !carries_fixed_bytes<M>(in)) return;
-        if (length)
-            s = std::string(robowire::to_string(e.code)) + " at byte " + std::to_string(e.offset) + ": " +
-                std::string(robowire::table_v<M>.name) + " is " + valid_lengths<M>() + ", " +
-                std::to_string(in.size()) + " given";
-        else
-            s = describe_error<M>(e, [&] {
-                const auto loc = locate<M>(e.offset);
-                if (e.offset >= in.size()) return std::string{};
-                return loc ? raw_value_text(*loc, in, e.offset) : hex2(in[e.offset]);
-            }());
+        if (done || !carries_fixed_bytes<M>(in)) return;
+        if (const auto loc = locate<M>(e.offset)) {
+            done = true;
+            o.hints.push_back(loc->path + " at byte " + std::to_string(e.offset) + " is " +
+                              raw_value_text(*loc, in, e.offset) +
+                              (loc->is_enum && !loc->valid.empty() ? ", valid " + loc->valid : std::string()));
+        }
     });
-    if (s.empty()) s = std::string(robowire::to_string(e.code)) + " at byte " + std::to_string(e.offset);
-    return s;
+    return o;
 }
 
 // ---------------------------------------------------------------- list
@@ -335,6 +331,8 @@ struct value_reader {
     std::vector<std::string> tokens;
     std::size_t pos = 0;
     std::string error;
+    errc code = errc::ok;  // a library error (value_out_of_range, ...) at `byte`: encode_as gives its line
+    std::size_t byte = 0;
 };
 
 inline std::optional<std::int64_t> parse_integer(const std::string& t) {
@@ -366,9 +364,15 @@ bool parse_element(const F& f, E& v, value_reader& r, std::size_t byte, const st
         return fill(v, r, byte, path + ".");
     } else {
         const std::string& t = r.tokens[r.pos++];
-        auto bad = [&](std::string_view why) {
-            r.error = std::string(why) + " at byte " + std::to_string(byte) + ": " + path + "=" + shorten(t) +
-                      ", valid " + valid_of(f);
+        // the value given, and what the field takes; `code`: the library's error for it
+        auto bad = [&](std::string_view why, errc code = errc::ok) {
+            const std::string given = path + "=" + shorten(t);
+            if (code != errc::ok) r.error = given + " given, valid " + valid_of(f);  // a hint under the library's line
+            else
+                r.error =
+                    std::string(why) + " at byte " + std::to_string(byte) + ": " + given + ", valid " + valid_of(f);
+            r.code = code;
+            r.byte = byte;
             return false;
         };
         if constexpr (std::is_same_v<E, bool>) {
@@ -381,7 +385,7 @@ bool parse_element(const F& f, E& v, value_reader& r, std::size_t byte, const st
             } else {
                 const auto n = parse_integer(t);
                 if (!n || *n < 0 || *n > 255 || !robowire::is_valid_enum(static_cast<E>(*n)))
-                    return bad("unknown name");
+                    return bad("unknown name", errc::invalid_enum);
                 v = static_cast<E>(*n);
             }
         } else if constexpr (std::is_same_v<E, float>) {
@@ -392,18 +396,18 @@ bool parse_element(const F& f, E& v, value_reader& r, std::size_t byte, const st
         } else if constexpr (std::is_integral_v<E>) {
             const auto n = parse_integer(t);
             if (!n) return bad("not an integer");
-            if (*n < f.valid.min || *n > f.valid.max) return bad(robowire::to_string(errc::value_out_of_range));
+            if (*n < f.valid.min || *n > f.valid.max) return bad("", errc::value_out_of_range);
             v = static_cast<E>(*n);
         } else if constexpr (requires { v.view(); }) {
             const auto s = E::make(t);
-            if (!s) return bad("text too long");
+            if (!s) return bad("", errc::value_out_of_range);
             v = *s;
         } else {
             std::string err;
             const auto b = parse_hex_text(t, err);
             if (!b) return bad(err);
             const auto x = E::from(*b);
-            if (!x) return bad("too many bytes");
+            if (!x) return bad("", errc::capacity_exceeded);
             v = *x;
         }
         return true;
@@ -489,7 +493,11 @@ outcome encode_as(const std::vector<std::pair<std::string, std::string>>& values
         bool ok;
         if constexpr (F::is_optional) ok = fill_field(f, member.emplace(), r, 0, std::string(f.name));
         else ok = fill_field(f, member, r, 0, std::string(f.name));
-        if (!ok) {
+        if (!ok && r.code != errc::ok) {  // the library's line, the value given as a hint
+            o.status = exit_bad_input;
+            o.error = core_line<M>(robowire::error{r.code, static_cast<std::uint16_t>(r.byte)});
+            o.hints.push_back(r.error);
+        } else if (!ok) {
             o.status = exit_bad_input;
             o.error = r.error;
         }
@@ -498,7 +506,9 @@ outcome encode_as(const std::vector<std::pair<std::string, std::string>>& values
     const auto w = robowire::encode(m);
     if (!w) {
         o.status = exit_bad_input;
-        o.error = describe_error<M>(w.error());
+        o.error = core_line<M>(w.error());
+        if (const auto f = robowire::field_at<M>(w.error()); f && w.error().code == errc::missing_field)
+            o.hints.push_back("give " + std::string(f.name) + " too");
         return o;
     }
     o.message = mname;

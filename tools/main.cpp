@@ -99,7 +99,7 @@ int finish_output(output& out, int rc) {
 int report(const protocol& p, std::span<const std::uint8_t> bytes, direction d, output& out) {
     const outcome o = p.decode(bytes, d, out, {});
     if (o.status != exit_ok) {
-        out.error({}, o.error, "", {{"protocol", p.name}}, {});
+        out.error({}, o.error, "", {{"protocol", p.name}}, o.hints);
         out.flush();
         err_line("error: " + o.error);
         for (const auto& h : o.hints) err_line("hint: " + h);
@@ -234,6 +234,7 @@ int run_encode(const std::string& protocol_name, const std::string& message,
     const outcome o = p.encode(message, values);
     if (o.status != exit_ok) {
         err_line("error: " + o.error);
+        for (const auto& h : o.hints) err_line("hint: " + h);
         return o.status;
     }
     out_line(hex_of(o.bytes));

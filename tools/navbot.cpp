@@ -9,10 +9,11 @@ namespace nb = robowire::navbot;
 outcome decode(std::span<const std::uint8_t> in, direction, output& out, const record_meta& meta) {
     const auto r = nb::decode_frame(in);
     if (!r) {
-        outcome o = failure(exit_bad_input, describe_decode_error<nb::message>(in, r.error()));
+        char buf[160];
+        outcome o = decode_failure<nb::message>(nb::describe_error(r.error(), in, buf), in, r.error());
         if (r.code() == errc::too_long || r.code() == errc::too_short)
-            o.error += " (" + std::string(nb::length_error_text(in.size())) + ")";
-        o.hints = sign_magnitude_notes(in);
+            o.hints.back() += " (" + std::string(nb::length_error_text(in.size())) + ")";
+        for (auto& n : sign_magnitude_notes(in)) o.hints.push_back(std::move(n));
         return o;
     }
     emit::variant_message(out, meta, "navbot", *r, sign_magnitude_notes(in));

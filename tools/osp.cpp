@@ -6,36 +6,9 @@ namespace robowire::cli {
 namespace {
 namespace osp = robowire::osp;
 
-// The message whose DEV and CMD (bytes 2 and 3) `in` carries: "status (DEV 02 CMD 14)",
-// or "DEV 03 CMD 01 (no such message)"; empty when `in` is shorter than 4 bytes.
-std::string message_of(std::span<const std::uint8_t> in) {
-    if (in.size() < 4) return {};
-    std::string name;
-    for_each_alternative<osp::message>([&](auto t) {
-        using M = typename decltype(t)::type;
-        bool dev = false, cmd = false;
-        for (const auto& b : robowire::table_v<M>.fixed) {
-            if (b.offset == 2) dev = b.value == in[2];
-            if (b.offset == 3) cmd = b.value == in[3];
-        }
-        if (name.empty() && dev && cmd) name = std::string(robowire::table_v<M>.name);
-    });
-    const std::string where = "DEV " + hex_of(in.subspan(2, 1)) + " CMD " + hex_of(in.subspan(3, 1));
-    return name.empty() ? where + " (no such message)" : name + " (" + where + ")";
-}
-
-// "bad header byte at byte 1: 0xAB, expected 0xAA (frames are FF AA DEV CMD P1..P4 55 77); message status (DEV 02 CMD
-// 14)"
-std::string marker_error(std::span<const std::uint8_t> in, const robowire::error& e) {
-    std::string s = std::string(robowire::to_string(e.code)) + " at byte " + std::to_string(e.offset);
-    for (const auto& b : robowire::table_v<osp::frame>.fixed) {
-        if (b.offset != e.offset || e.offset >= in.size()) continue;
-        s += ": " + hex2(in[e.offset]) + ", expected " + hex2(b.value) + " (frames are FF AA DEV CMD P1..P4 55 77)";
-    }
-    if (const std::string m = message_of(in); !m.empty()) s += "; message " + m;
-    return s;
-}
-
+// A decode error: osp::describe_error's line ("voltage: bad trailer byte at
+// byte 9"), with hints: a marker byte given and expected, the value at the
+// offset, the frame's DEV, CMD and parameters.
 outcome decode(std::span<const std::uint8_t> in, direction, output& out, const record_meta& meta) {
     const auto r = osp::decode(in);
     if (r) {
@@ -43,13 +16,19 @@ outcome decode(std::span<const std::uint8_t> in, direction, output& out, const r
         emit::variant_message(out, meta, "osp", *r, no_notes);
         return {};
     }
-    if (r.code() == errc::bad_header || r.code() == errc::bad_trailer)
-        return failure(exit_bad_input, marker_error(in, r.error()));
-    outcome o = failure(exit_bad_input, describe_decode_error<osp::message>(in, r.error()));
-    if (const auto& f = r.frame()) {
-        o.error += " (DEV " + hex_of(std::span<const std::uint8_t>(&f->device, 1)) + " CMD " +
-                   hex_of(std::span<const std::uint8_t>(&f->command, 1)) + " params " + hex_of(f->params) + ")";
+    const robowire::error e = r.error();
+    char buf[160];
+    outcome o = decode_failure<osp::message>(osp::describe_error(e, in, buf), in, e);
+    if (e.code == errc::bad_header || e.code == errc::bad_trailer) {
+        o.hints.clear();
+        for (const auto& b : robowire::table_v<osp::frame>.fixed)
+            if (b.offset == e.offset && e.offset < in.size())
+                o.hints.push_back("byte " + std::to_string(e.offset) + " is " + hex2(in[e.offset]) + ", expected " +
+                                  hex2(b.value) + " (frames are FF AA DEV CMD P1..P4 55 77)");
     }
+    if (const auto& f = r.frame())
+        o.hints.push_back("DEV " + hex_of(std::span<const std::uint8_t>(&f->device, 1)) + " CMD " +
+                          hex_of(std::span<const std::uint8_t>(&f->command, 1)) + " params " + hex_of(f->params));
     return o;
 }
 

@@ -6,13 +6,13 @@ from __future__ import annotations
 
 TYPE_CHECKING = False  # (typing is imported by type checkers only: it costs milliseconds at import)
 
-from . import _robowire
+from . import _errors, _robowire
 
 if TYPE_CHECKING:
     from typing import Any
 
 _ext = _robowire.osp
-globals().update({_n: getattr(_ext, _n) for _n in dir(_ext) if not _n.startswith("_")})
+globals().update(_errors.api_of(_ext))  # keywords checked: a surrogate keyword is a TypeError
 
 
 def schema() -> dict[str, Any]:

@@ -39,14 +39,19 @@ candidate by_command(std::uint8_t cmd, std::size_t len) {
 
 enum class direction { any, command, notification };
 
-py::dict decode_as(std::span<const std::uint8_t> in, direction d, std::string_view extra = {}) {
+// Decodes in one direction; DecodeError: describe_error's line, `note` (the
+// other direction's reading of the command byte) as a note.
+py::dict decode_as(std::span<const std::uint8_t> in, direction d, std::string note = {}) {
+    std::vector<std::string> notes;
+    if (!note.empty()) notes.push_back(std::move(note));
+    char buf[160];
     if (d == direction::command) {
         const auto r = bw::decode_command(in);
-        if (!r) raise_decode<bw::command>(in, r.error(), {}, extra);
+        if (!r) raise_decode(robowire::describe_error<bw::command>(r.error(), in, buf), r.error(), notes);
         return variant_dict(protocol(), *r);
     }
     const auto r = bw::decode_notification(in);
-    if (!r) raise_decode<bw::notification>(in, r.error(), {}, extra);
+    if (!r) raise_decode(robowire::describe_error<bw::notification>(r.error(), in, buf), r.error(), notes);
     return variant_dict(protocol(), *r);
 }
 
@@ -57,29 +62,28 @@ py::dict decode(py::handle data, py::handle dir) {
     const auto in = bytes.span();
     direction d = direction::any;
     if (!dir.is_none()) {
-        const auto s = PyUnicode_Check(dir.ptr()) ? dir.cast<std::string>() : std::string();
+        const auto s = PyUnicode_Check(dir.ptr()) ? name_of(dir.ptr()) : std::string();
         if (s == "command") d = direction::command;
         else if (s == "notification") d = direction::notification;
-        else throw py::value_error("direction: 'command', 'notification' or None, got " + py::repr(dir).cast<std::string>());
+        else throw py::value_error("direction: 'command', 'notification' or None, got " + shorten(py::repr(dir).cast<std::string>()));
     }
     if (in.empty()) return decode_as(in, d == direction::any ? direction::command : d);
     const auto c = by_command<bw::command>(in[0], in.size());
     const auto n = by_command<bw::notification>(in[0], in.size());
     if (d == direction::command)
-        return decode_as(in, d, !c.found && n.found ? " (" + hex2(in[0]) + " is the notification " + n.name + ")" : "");
+        return decode_as(in, d, !c.found && n.found ? hex2(in[0]) + " is the notification " + n.name : "");
     if (d == direction::notification)
-        return decode_as(in, d, !n.found && c.found ? " (" + hex2(in[0]) + " is the command " + c.name + ")" : "");
+        return decode_as(in, d, !n.found && c.found ? hex2(in[0]) + " is the command " + c.name : "");
     if (c.found && !n.found) return decode_as(in, direction::command);
     if (n.found && !c.found) return decode_as(in, direction::notification);
     if (!c.found && !n.found)
-        raise(classes().decode, "unknown message at byte 0: " + hex2(in[0]) + " is no BuWizz3 command or notification",
-              robowire::errc::unknown_message, 0, {}, {});
+        return decode_as(in, direction::command, hex2(in[0]) + " is no BuWizz3 command or notification");
     if (c.fits && !n.fits) return decode_as(in, direction::command);
     if (n.fits && !c.fits) return decode_as(in, direction::notification);
     const std::string which = hex2(in[0]) + " is the command " + c.name + " (" + c.lengths + ") and the notification " + n.name +
                               " (" + n.lengths + "); " + std::to_string(in.size()) + (in.size() == 1 ? " byte" : " bytes") + " given";
     if (c.fits && n.fits) throw py::value_error(which + ": pass direction='command' or direction='notification'");
-    return decode_as(in, direction::command, " (" + which + ")");
+    return decode_as(in, direction::command, which);
 }
 
 py::bytes encode(py::handle message, py::kwargs fields) {
@@ -99,14 +103,15 @@ T value_or_raise(const robowire::result<T>& r, std::string_view what) {
 
 bw::lpf_setting lpf_of(py::handle setting) {
     if (PyUnicode_Check(setting.ptr())) {
-        if (const auto e = robowire::enum_from_name<bw::lpf_setting>(setting.cast<std::string>())) return *e;
+        if (const auto e = robowire::enum_from_name<bw::lpf_setting>(name_of(setting.ptr()))) return *e;
     } else if (PyLong_Check(setting.ptr())) {
-        const long v = setting.cast<long>();
-        if (v >= 0 && v <= 255 && robowire::is_valid_enum(static_cast<bw::lpf_setting>(v))) return static_cast<bw::lpf_setting>(v);
+        int overflow = 0;
+        const long long v = PyLong_AsLongLongAndOverflow(setting.ptr(), &overflow);
+        if (!overflow && v >= 0 && v <= 255 && robowire::is_valid_enum(static_cast<bw::lpf_setting>(v))) return static_cast<bw::lpf_setting>(v);
     } else {
         throw py::type_error("setting: a name such as 'hz_50' or a code");
     }
-    raise(classes().encode, "lpf_hz: value is not a valid code", robowire::errc::invalid_enum, 1, {}, {});
+    raise(classes().encode, "lpf_hz: setting: value is not a valid code", robowire::errc::invalid_enum, 1, {}, {});
 }
 
 std::string uuid_text(const robowire::uuid128& u) {
@@ -117,52 +122,57 @@ std::string uuid_text(const robowire::uuid128& u) {
 }  // namespace
 
 void init_buwizz3(py::module_& m) {
-    m.def("decode", &decode, py::arg("data"), py::arg("direction") = py::none(),
-          "Decodes a command or a notification into a dict (the command-line tool's JSON line).");
-    m.def("encode", &encode, py::arg("message"),
+    m.def("decode", decode_entry(&decode),
+          "decode(data, direction=None) -> dict. Decodes a command or a notification into a dict (the command-line tool's JSON line).");
+    m.def("encode", encode_entry(&encode),
           "encode(name, **fields) or encode(dict as decode returns it) -> bytes.");
 
     // units (status report)
-    m.def("battery_volts", [](std::uint8_t raw) { return bw::battery_volts(raw); }, py::arg("raw"));
-    m.def("motor_amps", [](std::uint8_t raw) { return bw::motor_amps(raw); }, py::arg("raw"));
-    m.def("accel_count", [](std::int16_t word) { return bw::accel_count(word); }, py::arg("word"));
-    m.def("accel_milli_g", [](std::int16_t word) { return bw::accel_milli_g(word); }, py::arg("word"));
-    m.def("battery_millivolts", [](std::uint8_t raw) { return bw::battery_millivolts(raw); }, py::arg("raw"));
-    m.def("motor_milliamps", [](std::uint8_t raw) { return bw::motor_milliamps(raw); }, py::arg("raw"));
-    m.def("accel_micro_g", [](std::int16_t word) { return bw::accel_micro_g(word); }, py::arg("word"));
-    m.def("accel_milli_g_rounded", [](std::int16_t word) { return bw::accel_milli_g_rounded(word); }, py::arg("word"));
+    m.def("battery_volts", [](const py::int_& raw) { return bw::battery_volts(int_arg<std::uint8_t>(raw, "battery_volts", "raw")); }, py::arg("raw"));
+    m.def("motor_amps", [](const py::int_& raw) { return bw::motor_amps(int_arg<std::uint8_t>(raw, "motor_amps", "raw")); }, py::arg("raw"));
+    m.def("accel_count", [](const py::int_& word) { return bw::accel_count(int_arg<std::int16_t>(word, "accel_count", "word")); }, py::arg("word"));
+    m.def("accel_milli_g", [](const py::int_& word) { return bw::accel_milli_g(int_arg<std::int16_t>(word, "accel_milli_g", "word")); }, py::arg("word"));
+    m.def("battery_millivolts", [](const py::int_& raw) { return bw::battery_millivolts(int_arg<std::uint8_t>(raw, "battery_millivolts", "raw")); }, py::arg("raw"));
+    m.def("motor_milliamps", [](const py::int_& raw) { return bw::motor_milliamps(int_arg<std::uint8_t>(raw, "motor_milliamps", "raw")); }, py::arg("raw"));
+    m.def("accel_micro_g", [](const py::int_& word) { return bw::accel_micro_g(int_arg<std::int16_t>(word, "accel_micro_g", "word")); }, py::arg("word"));
+    m.def("accel_milli_g_rounded", [](const py::int_& word) { return bw::accel_milli_g_rounded(int_arg<std::int16_t>(word, "accel_milli_g_rounded", "word")); }, py::arg("word"));
     // units (commands)
     m.def("lpf_hz", [](py::handle s) { return bw::lpf_hz(lpf_of(s)); }, py::arg("setting"));
-    m.def("lpf_from_hz", [](double hz) { return std::string(robowire::enum_name(value_or_raise(bw::lpf_from_hz(hz), "lpf_from_hz"))); },
+    m.def("lpf_from_hz", [](double hz) { return std::string(robowire::enum_name(value_or_raise(bw::lpf_from_hz(hz), "lpf_from_hz: hz"))); },
           py::arg("hz"));
-    m.def("ramp_rate_from_seconds", [](double s) { return value_or_raise(bw::ramp_rate_from_seconds(s), "ramp_rate_from_seconds"); },
+    m.def("ramp_rate_from_seconds", [](double s) { return value_or_raise(bw::ramp_rate_from_seconds(s), "ramp_rate_from_seconds: seconds"); },
           py::arg("seconds"));
-    m.def("ramp_seconds", [](std::uint8_t rate) { return bw::ramp_seconds(rate); }, py::arg("rate"));
+    m.def("ramp_seconds", [](const py::int_& rate) { return bw::ramp_seconds(int_arg<std::uint8_t>(rate, "ramp_seconds", "rate")); }, py::arg("rate"));
     m.def("current_limit_raw",
-          [](double ma, double step) { return value_or_raise(bw::current_limit_raw(ma, step), "current_limit_raw"); },
+          [](double ma, double step) { return value_or_raise(bw::current_limit_raw(ma, step), "current_limit_raw: milliamps"); },
           py::arg("milliamps"), py::arg("step_ma") = bw::default_current_step_ma);
-    m.def("current_limit_ma", [](std::uint8_t raw, double step) { return bw::current_limit_ma(raw, step); }, py::arg("raw"),
+    m.def("current_limit_ma", [](const py::int_& raw, double step) { return bw::current_limit_ma(int_arg<std::uint8_t>(raw, "current_limit_ma", "raw"), step); }, py::arg("raw"),
           py::arg("step_ma") = bw::default_current_step_ma);
-    m.def("k_lp_from_cutoff", [](double f) { return value_or_raise(bw::k_lp_from_cutoff(f), "k_lp_from_cutoff"); }, py::arg("hz"));
+    m.def("k_lp_from_cutoff", [](double f) { return value_or_raise(bw::k_lp_from_cutoff(f), "k_lp_from_cutoff: hz"); }, py::arg("hz"));
     m.attr("default_current_step_ma") = bw::default_current_step_ma;
-    m.def("position_servo_preset", [](std::uint8_t port) { return message_dict(protocol(), bw::position_servo_preset(port)); },
+    m.def("position_servo_preset", [](const py::int_& port) { return message_dict(protocol(), bw::position_servo_preset(int_arg<std::uint8_t>(port, "position_servo_preset", "port", true))); },
           py::arg("port"));
-    m.def("speed_servo_preset", [](std::uint8_t port) { return message_dict(protocol(), bw::speed_servo_preset(port)); },
+    m.def("speed_servo_preset", [](const py::int_& port) { return message_dict(protocol(), bw::speed_servo_preset(int_arg<std::uint8_t>(port, "speed_servo_preset", "port", true))); },
           py::arg("port"));
     m.def("generic_pid_preset",
-          [](std::uint8_t port, py::handle mode) {
+          [](const py::int_& port, py::handle mode) {
               bw::port_function f{};
+              const auto bad = [] {
+                  raise(classes().encode, "generic_pid_preset: mode: value is not a valid code", robowire::errc::invalid_enum, 37, {}, {});
+              };
               if (PyUnicode_Check(mode.ptr())) {
-                  const auto e = robowire::enum_from_name<bw::port_function>(mode.cast<std::string>());
-                  if (!e) raise(classes().encode, "generic_pid_preset: value is not a valid code", robowire::errc::invalid_enum, 37, {}, {});
+                  const auto e = robowire::enum_from_name<bw::port_function>(name_of(mode.ptr()));
+                  if (!e) bad();
                   f = *e;
-              } else {
-                  const long v = mode.cast<long>();
-                  if (v < 0 || v > 255 || !robowire::is_valid_enum(static_cast<bw::port_function>(v)))
-                      raise(classes().encode, "generic_pid_preset: value is not a valid code", robowire::errc::invalid_enum, 37, {}, {});
+              } else if (PyLong_Check(mode.ptr())) {
+                  int overflow = 0;
+                  const long long v = PyLong_AsLongLongAndOverflow(mode.ptr(), &overflow);
+                  if (overflow || v < 0 || v > 255 || !robowire::is_valid_enum(static_cast<bw::port_function>(v))) bad();
                   f = static_cast<bw::port_function>(v);
+              } else {
+                  throw py::type_error("generic_pid_preset: mode: a name such as 'pid_position' or a code, got " + type_name(mode.ptr()));
               }
-              return message_dict(protocol(), bw::generic_pid_preset(port, f));
+              return message_dict(protocol(), bw::generic_pid_preset(int_arg<std::uint8_t>(port, "generic_pid_preset", "port", true), f));
           },
           py::arg("port"), py::arg("mode"));
     m.def("default_current_limits", [] { return message_dict(protocol(), bw::default_current_limits); });
@@ -171,7 +181,10 @@ void init_buwizz3(py::module_& m) {
     m.attr("service_uuid") = uuid_text(bw::service_uuid);
     m.attr("application_uuid") = uuid_text(bw::application_uuid);
     m.attr("bootloader_uuid") = uuid_text(bw::bootloader_uuid);
-    m.def("uart_characteristic", [](int n) { return uuid_text(value_or_raise(bw::uart_characteristic(n), "uart_characteristic")); },
+    m.def("uart_characteristic", [](const py::int_& n) {
+              const char* fn = "uart_characteristic";
+              return uuid_text(value_or_raise(bw::uart_characteristic(int_arg<int>(n, fn, "port", true)), "uart_characteristic: port"));
+          },
           py::arg("port"));
 
     // advertisement

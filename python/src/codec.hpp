@@ -78,6 +78,36 @@ inline double tidy(double v) {
     return out;
 }
 
+// A str as UTF-8 for looking up a name: lone surrogates, which no name
+// holds, are spelled as Python escapes so that the lookup fails with the
+// caller's KeyError or ValueError (never a UnicodeEncodeError).
+inline std::string name_of(PyObject* o) {
+    Py_ssize_t n = 0;
+    if (const char* c = PyUnicode_AsUTF8AndSize(o, &n)) return {c, static_cast<std::size_t>(n)};
+    PyErr_Clear();
+    PyObject* b = PyUnicode_AsEncodedString(o, "utf-8", "backslashreplace");
+    if (!b) throw py::error_already_set();
+    std::string out(PyBytes_AS_STRING(b), static_cast<std::size_t>(PyBytes_GET_SIZE(b)));
+    Py_DECREF(b);
+    return out;
+}
+// A str's bytes to send: UTF-8, undecodable bytes read with surrogateescape
+// sent back as they were; ValueError naming `what` for other lone surrogates.
+inline py::bytes utf8_bytes(PyObject* o, std::string_view what) {
+    PyObject* b = PyUnicode_AsEncodedString(o, "utf-8", "surrogateescape");
+    if (!b) {
+        PyErr_Clear();
+        throw py::value_error(std::string(what) + ": not text that UTF-8 can carry (a lone surrogate)");
+    }
+    return py::reinterpret_steal<py::bytes>(b);
+}
+
+// A value quoted in a message: at most 40 characters ("xxx...").
+inline std::string shorten(std::string s) {
+    if (s.size() > 40) s = s.substr(0, 37) + "...";
+    return s;
+}
+
 // ---------------------------------------------------------------- errors
 // The Python classes robowire.DecodeError and robowire.EncodeError (module init sets them).
 struct error_classes {
@@ -102,6 +132,28 @@ inline error_classes& classes() {
     throw py::error_already_set();
 }
 
+// An integer argument of a unit helper as T: ValueError naming the
+// argument and T's range when it does not fit ("battery_volts: raw = 256:
+// value out of range (valid 0..255)"), EncodeError value_out_of_range from
+// helpers that build a raw value (`encode`), the same error as for a value
+// T holds that the helper refuses ("soc_from_basis_points: basis_points:
+// value out of range").
+template <class T>
+T int_arg(const py::int_& o, std::string_view fn, std::string_view arg, bool encode = false) {
+    int overflow = 0;
+    const long long x = PyLong_AsLongLongAndOverflow(o.ptr(), &overflow);
+    if (x == -1 && PyErr_Occurred()) throw py::error_already_set();
+    if (overflow == 0 && std::in_range<T>(x)) return static_cast<T>(x);
+    const std::string tail = ": " + std::string(robowire::to_string(errc::value_out_of_range)) + " (valid " +
+                             std::to_string(std::numeric_limits<T>::min()) + ".." + std::to_string(std::numeric_limits<T>::max()) + ")";
+    const std::string given = py::repr(o).cast<std::string>();
+    if (!encode)
+        throw py::value_error(std::string(fn) + ": " + std::string(arg) + " = " + (given.size() > 40 ? given.substr(0, 37) + "..." : given) +
+                              tail);
+    raise(classes().encode, std::string(fn) + ": " + std::string(arg) + ": " + std::string(robowire::to_string(errc::value_out_of_range)),
+          errc::value_out_of_range, 0, {}, {});
+}
+
 // describe_error's line for an error of message M.
 template <class M>
 std::string describe(const robowire::error& e) {
@@ -111,11 +163,10 @@ std::string describe(const robowire::error& e) {
 }
 // Raises DecodeError / EncodeError for error e of message M.
 template <class M>
-[[noreturn]] void raise_for(PyObject* cls, const robowire::error& e, const std::vector<std::string>& notes = {},
-                            std::string_view extra = {}) {
+[[noreturn]] void raise_for(PyObject* cls, const robowire::error& e, const std::vector<std::string>& notes = {}) {
     const bool length = e.code == errc::too_short || e.code == errc::too_long;
     const auto f = robowire::field_at<M>(e);
-    raise(cls, describe<M>(e) + std::string(extra), e.code, e.offset, length ? std::string_view{} : f.name,
+    raise(cls, describe<M>(e), e.code, e.offset, length ? std::string_view{} : f.name,
           robowire::table_v<M>.name, notes);
 }
 
@@ -370,10 +421,12 @@ struct path {
 
 inline std::string type_name(PyObject* o) { return Py_TYPE(o)->tp_name; }
 
-// Raises EncodeError for a value of field f that cannot be encoded, in
-// describe_error's format ("maneuver.pitch: value out of range (valid
-// -100..100 %) at byte 7"); `path` without the array indices names the field
-// ("set_led_status.colors.g" inside a record).
+// Raises EncodeError for a value of field f that cannot be encoded, with
+// describe_error's line for Top ("maneuver.pitch: value out of range (valid
+// -100..100 %) at byte 7"): the same text as the library's own encode
+// error. .field is `path` without the array indices and the message
+// ("colors.g" inside a record); a note gives what the line cannot (the
+// capacity of a text, the range of a record's member).
 template <class Top, class F>
 [[noreturn]] void field_error(const F& f, const std::string& path, errc code, std::size_t offset) {
     std::string name;
@@ -381,23 +434,25 @@ template <class Top, class F>
         if (path[i] == '[') i = path.find(']', i);
         else name += path[i];
     }
-    std::string text = name + ": " + std::string(robowire::to_string(code));
+    const auto dot = name.find('.');
+    const std::string field = dot == std::string::npos ? std::string() : name.substr(dot + 1);
+    std::vector<std::string> notes;
     if (code == errc::value_out_of_range) {
         using E = element_t<F>;
         if constexpr (F::kind == wire_kind::text) {
-            text += " (valid up to " + std::to_string(E::capacity()) + " bytes)";
+            notes.push_back(field + " holds up to " + std::to_string(E::capacity()) + " bytes of UTF-8");
         } else if constexpr (std::is_floating_point_v<E>) {
-            text += " (valid a 32-bit float)";
+            notes.push_back(field + " holds a 32-bit float");
         } else if constexpr (std::is_integral_v<E>) {
-            text += " (valid " + std::to_string(f.valid.min) + ".." + std::to_string(f.valid.max);
-            if (!f.unit.name.empty()) text += f.unit.raw_is_physical ? " " + std::string(f.unit.name) : std::string(" raw");
-            text += ")";
+            if (robowire::field_at<Top>(offset).name != field) {  // a record's member: the line names the record
+                std::string valid = field + ": valid " + std::to_string(f.valid.min) + ".." + std::to_string(f.valid.max);
+                if (!f.unit.name.empty()) valid += f.unit.raw_is_physical ? " " + std::string(f.unit.name) : std::string(" raw");
+                notes.push_back(valid);
+            }
         }
     }
-    text += " at byte " + std::to_string(offset);
-    const auto dot = name.find('.');
-    raise(classes().encode, text, code, offset, dot == std::string::npos ? std::string_view{} : std::string_view(name).substr(dot + 1),
-          robowire::table_v<Top>.name);
+    raise(classes().encode, describe<Top>(robowire::error{code, static_cast<std::uint16_t>(offset)}), code, offset, field,
+          robowire::table_v<Top>.name, notes);
 }
 
 template <class Top, class M>
@@ -418,10 +473,7 @@ void read_element(const F& f, E& v, PyObject* o, const path& at, std::size_t off
         v = x == 1;
     } else if constexpr (std::is_enum_v<E>) {
         if (PyUnicode_Check(o)) {
-            Py_ssize_t n = 0;
-            const char* s = PyUnicode_AsUTF8AndSize(o, &n);
-            if (!s) throw py::error_already_set();
-            const auto e = robowire::enum_from_name<E>(std::string_view(s, static_cast<std::size_t>(n)));
+            const auto e = robowire::enum_from_name<E>(name_of(o));
             if (!e) field_error<Top>(f, at.str(), errc::invalid_enum, offset);
             v = *e;
         } else if (PyLong_Check(o)) {
@@ -455,7 +507,7 @@ void read_element(const F& f, E& v, PyObject* o, const path& at, std::size_t off
         v = static_cast<E>(x);
     } else if constexpr (requires { v.view(); }) {  // text
         if (!PyUnicode_Check(o)) throw py::type_error(at.str() + ": expected a str, got " + type_name(o));
-        py::object utf8 = steal(PyUnicode_AsEncodedString(o, "utf-8", "surrogateescape"));
+        const py::bytes utf8 = utf8_bytes(o, at.str());
         const std::string_view s(PyBytes_AS_STRING(utf8.ptr()), static_cast<std::size_t>(PyBytes_GET_SIZE(utf8.ptr())));
         const auto t = E::make(s);
         if (!t) field_error<Top>(f, at.str(), errc::value_out_of_range, offset);
@@ -531,10 +583,8 @@ void fill(M& m, PyObject* dict, std::size_t base, const path* parent, bool ignor
     Py_ssize_t pos = 0;
     while (PyDict_Next(dict, &pos, &key, &value)) {
         if (!PyUnicode_Check(key)) throw py::type_error(parent->str() + ": field names are str, got " + type_name(key));
-        Py_ssize_t n = 0;
-        const char* c = PyUnicode_AsUTF8AndSize(key, &n);
-        if (!c) throw py::error_already_set();
-        const std::string_view name(c, static_cast<std::size_t>(n));
+        const std::string key_text = name_of(key);
+        const std::string_view name(key_text);
         bool found = false;
         robowire::for_each_field<M>([&](const auto& f) {
             using F = std::remove_cvref_t<decltype(f)>;
@@ -551,7 +601,7 @@ void fill(M& m, PyObject* dict, std::size_t base, const path* parent, bool ignor
         });
         if (found) continue;
         if (ignore_derived && derived_key<M>(name)) continue;
-        std::string what = "unknown field " + parent->str() + "." + std::string(name) + " (fields of " + std::string(robowire::table_v<M>.name) +
+        std::string what = "unknown field " + parent->str() + "." + shorten(std::string(name)) + " (fields of " + std::string(robowire::table_v<M>.name) +
                            ": " + field_names<M>() + ")";
         if (!ignore_derived && derived_key<M>(name)) what += "; decode adds it beside the raw value, encode takes the raw value";
         throw py::key_error(what);
@@ -599,28 +649,21 @@ std::string message_names() {
     return s;
 }
 
-// Does `in` carry M's fixed bytes, as far as it goes (and reach one of them)?
-template <class M>
-bool carries_fixed_bytes(std::span<const std::uint8_t> in) {
-    bool reached = false;
-    for (const auto& b : robowire::table_v<M>.fixed) {
-        if (b.offset >= in.size()) continue;
-        if (in[b.offset] != b.value) return false;
-        reached = true;
+// Raises DecodeError for a decode error with `text`, the protocol's
+// describe_error line for it ("status: input too short (54 or 68..129
+// bytes) at byte 4"); .message and .field are the names the line starts
+// with ("message.field: ..." or "message: ..."), None when it names none.
+[[noreturn]] inline void raise_decode(std::string_view text, const robowire::error& e, const std::vector<std::string>& notes = {}) {
+    std::string_view message, field;
+    const auto colon = text.find(": ");
+    if (colon != std::string_view::npos && text.substr(0, colon).find(' ') == std::string_view::npos) {
+        message = text.substr(0, colon);
+        if (const auto dot = message.find('.'); dot != std::string_view::npos) {
+            field = message.substr(dot + 1);
+            message = message.substr(0, dot);
+        }
     }
-    return reached;
-}
-// Raises DecodeError for a decode error of variant V: described by the
-// alternative whose fixed bytes the input carries (as the tool does).
-template <class V>
-[[noreturn]] void raise_decode(std::span<const std::uint8_t> in, const robowire::error& e, const std::vector<std::string>& notes = {},
-                               std::string_view extra = {}) {
-    for_each_alternative<V>([&](auto t) {
-        using M = typename decltype(t)::type;
-        if (carries_fixed_bytes<M>(in)) raise_for<M>(classes().decode, e, notes, extra);
-    });
-    raise(classes().decode, std::string(robowire::to_string(e.code)) + " at byte " + std::to_string(e.offset) + std::string(extra),
-          e.code, e.offset, {}, {}, notes);
+    raise(classes().decode, text, e.code, e.offset, field, message, notes);
 }
 
 // The bytes of a bytes-like object (bytes, bytearray, memoryview, ...).
@@ -649,6 +692,39 @@ private:
     std::span<const std::uint8_t> bytes_;
 };
 
+// decode(data, direction=None) and encode(message, **fields) take *args and
+// **kwargs and match them here: pybind11 refuses a call that matches no
+// signature with a TypeError it formats from the keywords, and aborts the
+// interpreter on a keyword that is not UTF-8 (the other functions are
+// guarded in Python, robowire/_errors.py; these two are the hot paths).
+template <class Fn>
+auto decode_entry(Fn fn) {
+    return [fn](const py::args& a, const py::kwargs& k) {
+        if (a.size() > 2)
+            throw py::type_error("decode() takes data and direction, " + std::to_string(a.size()) + " positional arguments given");
+        py::object data, dir = py::none();
+        if (a.size() >= 1) data = a[0];
+        if (a.size() == 2) dir = a[1];
+        for (auto item : k) {
+            const std::string key = name_of(item.first.ptr());
+            if (key == "data" && !data) data = py::reinterpret_borrow<py::object>(item.second);
+            else if (key == "direction" && a.size() < 2) dir = py::reinterpret_borrow<py::object>(item.second);
+            else throw py::type_error("decode() got an unexpected keyword argument " + shorten(py::repr(item.first).cast<std::string>()));
+        }
+        if (!data) throw py::type_error("decode() missing its data (bytes)");
+        return fn(data, dir);
+    };
+}
+template <class Fn>
+auto encode_entry(Fn fn) {
+    return [fn](const py::args& a, py::kwargs k) {
+        if (a.size() != 1)
+            throw py::type_error("encode() takes a message (a name or a dict as decode returns it) and fields as keywords, " +
+                                 std::to_string(a.size()) + " positional arguments given");
+        return fn(a[0], k);
+    };
+}
+
 // encode(message, **fields) or encode(dict): which message and which fields.
 struct encode_request {
     std::string name;
@@ -658,7 +734,7 @@ struct encode_request {
 inline encode_request encode_args(std::string_view protocol, py::handle message, py::handle kwargs) {
     encode_request r;
     if (PyUnicode_Check(message.ptr())) {
-        r.name = message.cast<std::string>();
+        r.name = name_of(message.ptr());
         r.fields = kwargs && !kwargs.is_none() && PyDict_Size(kwargs.ptr()) > 0 ? kwargs.ptr() : nullptr;
         return r;
     }
@@ -670,9 +746,9 @@ inline encode_request encode_args(std::string_view protocol, py::handle message,
     PyObject* name = PyDict_GetItemString(d, "message");
     if (!name) throw py::key_error("encode: the dict has no \"message\"");
     if (!PyUnicode_Check(name)) throw py::type_error("encode: \"message\" is not a str");
-    r.name = py::reinterpret_borrow<py::str>(name).cast<std::string>();
+    r.name = name_of(name);
     if (PyObject* p = PyDict_GetItemString(d, "protocol"); p && PyUnicode_Check(p)) {
-        const auto given = py::reinterpret_borrow<py::str>(p).cast<std::string>();
+        const auto given = name_of(p);
         if (given != protocol) throw py::value_error("encode: a " + given + " message given to " + std::string(protocol) + ".encode");
     }
     PyObject* fields = PyDict_GetItemString(d, "fields");

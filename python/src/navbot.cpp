@@ -35,10 +35,11 @@ py::dict decode(py::handle data, py::handle dir) {
     const auto in = bytes.span();
     const auto r = nb::decode_frame(in);
     if (!r) {
-        std::string extra;
+        auto notes = sign_magnitude_notes(in);
         if (r.code() == robowire::errc::too_long || r.code() == robowire::errc::too_short)
-            extra = " (" + std::string(nb::length_error_text(in.size())) + ")";
-        raise_decode<nb::message>(in, r.error(), sign_magnitude_notes(in), extra);
+            notes.insert(notes.begin(), std::string(nb::length_error_text(in.size())));
+        char buf[160];
+        raise_decode(nb::describe_error(r.error(), in, buf), r.error(), notes);
     }
     py::dict d = variant_dict(protocol(), *r);
     if (const auto* f = std::get_if<nb::frame>(&*r); f && f->command == nb::command::json) {
@@ -71,13 +72,13 @@ py::bytes encode(py::handle message, py::kwargs fields) {
 }
 
 // The frames of one message (fragmenter): payload bytes, or text (UTF-8).
-py::list fragment(int command, py::handle payload) {
-    if (command < 0 || command > 255) throw py::value_error("command: 0..255, got " + std::to_string(command));
+py::list fragment(const py::int_& command_arg, py::handle payload) {
+    const auto command = int_arg<std::uint8_t>(command_arg, "fragment", "command");
     py::bytes raw;
-    if (PyUnicode_Check(payload.ptr())) raw = steal(PyUnicode_AsUTF8String(payload.ptr()));
+    if (PyUnicode_Check(payload.ptr())) raw = utf8_bytes(payload.ptr(), "fragment: payload");
     else raw = steal(PyBytes_FromObject(payload.ptr()));
     const auto* p = reinterpret_cast<const std::uint8_t*>(PyBytes_AS_STRING(raw.ptr()));
-    const auto frames = nb::make_frames(static_cast<std::uint8_t>(command),
+    const auto frames = nb::make_frames(command,
                                         std::span<const std::uint8_t>(p, static_cast<std::size_t>(PyBytes_GET_SIZE(raw.ptr()))));
     if (!frames) {
         const auto e = frames.error();
@@ -107,10 +108,8 @@ public:
         const auto r = r_.push(in);
         if (!r) {
             const auto e = r.error();
-            if (e.code == robowire::errc::too_short || e.code == robowire::errc::too_long || e.code == robowire::errc::bad_header)
-                raise_decode<nb::message>(in, e);
-            raise(classes().decode, "frame " + std::string(robowire::to_string(e.code)) + " at byte " + std::to_string(e.offset), e.code,
-                  e.offset, {}, {});
+            char buf[160];
+            raise_decode(nb::describe_error(e, in, buf), e);
         }
         static constexpr const char* names[] = {"need_more", "complete", "single", "duplicate", "restarted", "discarded"};
         const auto outcome = *r;
@@ -124,11 +123,12 @@ public:
         }
         return py::make_tuple(names[static_cast<int>(outcome)], message);
     }
-    std::string json() const {
+    // The text as `text` gives it: bytes that are not UTF-8 kept as surrogates.
+    py::object json() const {
         const auto j = r_.json();
         if (!j) raise(classes().decode, std::string(robowire::to_string(j.code())) + " at byte " + std::to_string(j.error().offset), j.code(),
                       j.error().offset, {}, {});
-        return std::string(*j);
+        return steal(PyUnicode_DecodeUTF8(j->data(), static_cast<Py_ssize_t>(j->size()), "surrogateescape"));
     }
     bool in_progress() const { return r_.in_progress(); }
     void clear() { r_.clear(); }
@@ -145,9 +145,9 @@ std::string uuid_text(const robowire::uuid128& u) {
 }  // namespace
 
 void init_navbot(py::module_& m) {
-    m.def("decode", &decode, py::arg("data"), py::arg("direction") = py::none(),
-          "Decodes one 20-byte frame into a dict (the command-line tool's JSON line).");
-    m.def("encode", &encode, py::arg("message"), "encode(name, **fields) or encode(dict as decode returns it) -> bytes.");
+    m.def("decode", decode_entry(&decode),
+          "decode(data, direction=None) -> dict. Decodes one 20-byte frame into a dict (the command-line tool's JSON line).");
+    m.def("encode", encode_entry(&encode), "encode(name, **fields) or encode(dict as decode returns it) -> bytes.");
     m.def("fragment", &fragment, py::arg("command"), py::arg("payload"),
           "The 20-byte frames of one message (payload: bytes, or str sent as UTF-8).");
     py::class_<reassembler>(m, "Reassembler", "Collects the frames of multi-frame messages (up to 256 frames).")
@@ -168,7 +168,7 @@ void init_navbot(py::module_& m) {
     m.attr("service_uuid") = uuid_text(nb::service_uuid);
     m.attr("write_uuid") = uuid_text(nb::write_uuid);
     m.attr("notify_uuid") = uuid_text(nb::notify_uuid);
-    m.def("is_navbot_name", [](std::string_view name) { return nb::is_navbot_name(name); }, py::arg("name"));
+    m.def("is_navbot_name", [](const py::str& name) { return nb::is_navbot_name(name_of(name.ptr())); }, py::arg("name"));
     m.def(
         "matches_advertisement", [](py::handle adv) { return nb::matches_advertisement(byte_input(adv).span()); },
         py::arg("advertisement"));

@@ -13,16 +13,18 @@ PyObject* protocol() {
     return p;
 }
 
-// Decodes a frame; raises DecodeError (with the frame's DEV, CMD and parameters
-// when the markers and length were right, as the command-line tool shows them).
+// Decodes a frame; raises DecodeError with osp::describe_error's line (a
+// note gives the frame's DEV, CMD and parameters when the markers and length
+// were right, as the command-line tool's hint does).
 py::dict decode_span(std::span<const std::uint8_t> in) {
     const auto r = osp::decode(in);
     if (r) return variant_dict(protocol(), *r);
-    std::string extra;
+    std::vector<std::string> notes;
     if (const auto& f = r.frame())
-        extra = " (DEV " + hex_of(std::span<const std::uint8_t>(&f->device, 1)) + " CMD " +
-                hex_of(std::span<const std::uint8_t>(&f->command, 1)) + " params " + hex_of(f->params) + ")";
-    raise_decode<osp::message>(in, r.error(), {}, extra);
+        notes.push_back("DEV " + hex_of(std::span<const std::uint8_t>(&f->device, 1)) + " CMD " +
+                        hex_of(std::span<const std::uint8_t>(&f->command, 1)) + " params " + hex_of(f->params));
+    char buf[160];
+    raise_decode(osp::describe_error(r.error(), in, buf), r.error(), notes);
 }
 
 py::dict decode(py::handle data, py::handle dir) {
@@ -81,6 +83,7 @@ private:
     osp::scanner s_;
 };
 
+// The helper's value, or EncodeError "fn: arg: <error>" (int_arg's text).
 template <class T>
 T value_or_raise(const robowire::result<T>& r, std::string_view what) {
     if (!r) raise(classes().encode, std::string(what) + ": " + std::string(robowire::to_string(r.code())), r.code(), r.error().offset, {}, {});
@@ -90,9 +93,9 @@ T value_or_raise(const robowire::result<T>& r, std::string_view what) {
 }  // namespace
 
 void init_osp(py::module_& m) {
-    m.def("decode", &decode, py::arg("data"), py::arg("direction") = py::none(),
-          "Decodes one 10-byte frame into a dict (the command-line tool's JSON line).");
-    m.def("encode", &encode, py::arg("message"), "encode(name, **fields) or encode(dict as decode returns it) -> bytes.");
+    m.def("decode", decode_entry(&decode),
+          "decode(data, direction=None) -> dict. Decodes one 10-byte frame into a dict (the command-line tool's JSON line).");
+    m.def("encode", encode_entry(&encode), "encode(name, **fields) or encode(dict as decode returns it) -> bytes.");
     py::class_<scanner>(m, "Scanner", "Finds and decodes OSP frames in a byte stream fed in chunks of any size.")
         .def(py::init<>())
         .def("feed", &scanner::feed, py::arg("chunk"), "Feeds bytes; returns the frames they complete: message dicts and error dicts.")
@@ -109,30 +112,38 @@ void init_osp(py::module_& m) {
         .value("published_firmware", osp::scale::published_firmware);
     const auto doc = osp::scale::document;
     // OBP-1 battery
-    m.def("millivolts", [](std::int16_t raw, osp::scale s) { return osp::obp1::millivolts(raw, s); }, py::arg("raw"), py::arg("scale") = doc);
-    m.def("milliamps", [](std::int16_t raw, osp::scale s) { return osp::obp1::milliamps(raw, s); }, py::arg("raw"), py::arg("scale") = doc);
-    m.def("soc_basis_points", [](std::uint16_t raw, osp::scale s) { return osp::obp1::soc_basis_points(raw, s); }, py::arg("raw"),
+    m.def("millivolts", [](const py::int_& raw, osp::scale s) { return osp::obp1::millivolts(int_arg<std::int16_t>(raw, "millivolts", "raw"), s); }, py::arg("raw"), py::arg("scale") = doc);
+    m.def("milliamps", [](const py::int_& raw, osp::scale s) { return osp::obp1::milliamps(int_arg<std::int16_t>(raw, "milliamps", "raw"), s); }, py::arg("raw"), py::arg("scale") = doc);
+    m.def("soc_basis_points", [](const py::int_& raw, osp::scale s) { return osp::obp1::soc_basis_points(int_arg<std::uint16_t>(raw, "soc_basis_points", "raw"), s); }, py::arg("raw"),
           py::arg("scale") = doc);
-    m.def("volts", [](std::int16_t raw, osp::scale s) { return osp::obp1::volts(raw, s); }, py::arg("raw"), py::arg("scale") = doc);
-    m.def("amps", [](std::int16_t raw, osp::scale s) { return osp::obp1::amps(raw, s); }, py::arg("raw"), py::arg("scale") = doc);
-    m.def("soc_percent", [](std::uint16_t raw, osp::scale s) { return osp::obp1::soc_percent(raw, s); }, py::arg("raw"),
+    m.def("volts", [](const py::int_& raw, osp::scale s) { return osp::obp1::volts(int_arg<std::int16_t>(raw, "volts", "raw"), s); }, py::arg("raw"), py::arg("scale") = doc);
+    m.def("amps", [](const py::int_& raw, osp::scale s) { return osp::obp1::amps(int_arg<std::int16_t>(raw, "amps", "raw"), s); }, py::arg("raw"), py::arg("scale") = doc);
+    m.def("soc_percent", [](const py::int_& raw, osp::scale s) { return osp::obp1::soc_percent(int_arg<std::uint16_t>(raw, "soc_percent", "raw"), s); }, py::arg("raw"),
           py::arg("scale") = doc);
     m.def("voltage_from_millivolts",
-          [](std::int32_t mv, osp::scale s) { return value_or_raise(osp::obp1::voltage_from_millivolts(mv, s), "voltage_from_millivolts"); },
+          [](const py::int_& mv, osp::scale s) {
+              const char* fn = "voltage_from_millivolts";
+              return value_or_raise(osp::obp1::voltage_from_millivolts(int_arg<std::int32_t>(mv, fn, "millivolts", true), s),
+                                    "voltage_from_millivolts: millivolts");
+          },
           py::arg("millivolts"), py::arg("scale") = doc);
     m.def("soc_from_basis_points",
-          [](std::uint16_t bp, osp::scale s) { return value_or_raise(osp::obp1::soc_from_basis_points(bp, s), "soc_from_basis_points"); },
+          [](const py::int_& bp, osp::scale s) {
+              const char* fn = "soc_from_basis_points";
+              return value_or_raise(osp::obp1::soc_from_basis_points(int_arg<std::uint16_t>(bp, fn, "basis_points", true), s),
+                                    "soc_from_basis_points: basis_points");
+          },
           py::arg("basis_points"), py::arg("scale") = doc);
     m.def("soc_from_percent",
-          [](double p, osp::scale s) { return value_or_raise(osp::obp1::soc_from_percent(p, s), "soc_from_percent"); },
+          [](double p, osp::scale s) { return value_or_raise(osp::obp1::soc_from_percent(p, s), "soc_from_percent: percent"); },
           py::arg("percent"), py::arg("scale") = doc);
     // ARM-1 arm
-    m.def("angle_count", [](std::uint16_t raw, osp::scale s) { return osp::arm1::angle_count(raw, s); }, py::arg("raw"),
+    m.def("angle_count", [](const py::int_& raw, osp::scale s) { return osp::arm1::angle_count(int_arg<std::uint16_t>(raw, "angle_count", "raw"), s); }, py::arg("raw"),
           py::arg("scale") = doc);
-    m.def("angle_to_radians", [](std::uint16_t raw, osp::scale s) { return osp::arm1::angle_to_radians(raw, s); }, py::arg("raw"),
+    m.def("angle_to_radians", [](const py::int_& raw, osp::scale s) { return osp::arm1::angle_to_radians(int_arg<std::uint16_t>(raw, "angle_to_radians", "raw"), s); }, py::arg("raw"),
           py::arg("scale") = doc);
     m.def("angle_from_radians",
-          [](double rad, osp::scale s) { return value_or_raise(osp::arm1::angle_from_radians(rad, s), "angle_from_radians"); },
+          [](double rad, osp::scale s) { return value_or_raise(osp::arm1::angle_from_radians(rad, s), "angle_from_radians: radians"); },
           py::arg("radians"), py::arg("scale") = doc);
 }
 

@@ -45,18 +45,19 @@ def test_errors_are_value_errors():
      "maneuver.pitch: value out of range (valid -100..100 %) at byte 7"),
     (navbot, "55 AA 10 00 00 00 00 00 00 03 00 00 00 00 00 00 00 00 00 00", "invalid_enum", 9, "switch_a", "maneuver",
      "maneuver.switch_a: value is not a valid code at byte 9"),
-    (navbot, "55 AA 10 01 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00", "bad_sequence", 3, "remaining", "frame",
-     "frame.remaining: frame out of sequence at byte 3"),
-    (navbot, "54 AA 02 00 00" + " 00" * 15, "bad_header", 0, None, None, "bad header byte at byte 0"),
+    (navbot, "55 AA 10 01 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00", "bad_sequence", 3, None, "maneuver",
+     "maneuver: frame out of sequence at byte 3"),
+    (navbot, "54 AA 02 00 00" + " 00" * 15, "bad_header", 0, None, "frame", "frame: bad header byte at byte 0"),
     (navbot, "55 AA 02 00", "too_short", 4, None, "frame",
-     "frame: input too short (20 bytes) at byte 4 (NAVBOT frames are 20 bytes)"),
-    (osp, "FF AA 02 12 D2 04 00 00 55 78", "bad_trailer", 9, None, None, "bad trailer byte at byte 9"),
-    (osp, "FE AA 02 12 D2 04 00 00 55 77", "bad_header", 0, None, None, "bad header byte at byte 0"),
+     "frame: input too short (20 bytes) at byte 4"),
+    (osp, "FF AA 02 12 D2 04 00 00 55 78", "bad_trailer", 9, None, "voltage", "voltage: bad trailer byte at byte 9"),
+    (osp, "FE AA 02 12 D2 04 00 00 55 77", "bad_header", 0, None, "voltage", "voltage: bad header byte at byte 0"),
+    (osp, "FF AA 02", "too_short", 3, None, "frame", "frame: input too short (10 bytes) at byte 3"),
     (osp, "FF AA 02 12 D2 04 00 00 55", "too_short", 9, None, "voltage", "voltage: input too short (10 bytes) at byte 9"),
     (osp, "FF AA 00 11 07 00 00 00 55 77", "invalid_enum", 4, "type", "device_type",
-     "device_type.type: value is not a valid code at byte 4 (DEV 00 CMD 11 params 07 00 00 00)"),
-    (osp, "FF AA 03 01 0A 0B 0C 0D 55 77", "unknown_message", 2, None, None,
-     "unknown message at byte 2 (DEV 03 CMD 01 params 0A 0B 0C 0D)"),
+     "device_type.type: value is not a valid code at byte 4"),
+    (osp, "FF AA 03 01 0A 0B 0C 0D 55 77", "unknown_message", 2, None, None, "unknown key 0x03 0x01 at byte 2"),
+    (buwizz3, "99", "unknown_message", 0, None, None, "unknown key 0x99 at byte 0"),
 ])
 def test_decode_errors(module, hexs, code, offset, field, message, text):
     e = decode_error(module.decode, bytes.fromhex(hexs))
@@ -64,12 +65,22 @@ def test_decode_errors(module, hexs, code, offset, field, message, text):
     assert code in robowire.error_codes
 
 
+def test_decode_error_notes():
+    """What describe_error's line leaves out comes as notes (the tool's hints)."""
+    e = decode_error(navbot.decode, bytes.fromhex("55 AA 02 00"))
+    assert e.notes == ["NAVBOT frames are 20 bytes"]
+    e = decode_error(osp.decode, bytes.fromhex("FF AA 00 11 07 00 00 00 55 77"))
+    assert e.notes == ["DEV 00 CMD 11 params 07 00 00 00"]
+    e = decode_error(osp.decode, bytes.fromhex("FF AA 03 01 0A 0B 0C 0D 55 77"))
+    assert e.notes == ["DEV 03 CMD 01 params 0A 0B 0C 0D"]
+
+
 def test_navbot_22_byte_sample_explained():
     e = decode_error(navbot.decode, bytes(22))  # markers are checked before the length
     assert (e.code, e.offset) == ("bad_header", 0)
     e = decode_error(navbot.decode, bytes.fromhex("55 AA 10 00 00" + "00" * 17))
     assert e.code == "too_long" and e.offset == 20
-    assert "the protocol document's sample frames have 2 extra bytes" in str(e)
+    assert "the protocol document's sample frames have 2 extra bytes" in e.notes[0]
 
 
 def test_navbot_error_notes():
@@ -80,15 +91,17 @@ def test_navbot_error_notes():
 
 def test_buwizz3_unknown_and_wrong_direction():
     e = decode_error(buwizz3.decode, b"\x99")
-    assert (e.code, e.offset, str(e)) == ("unknown_message", 0, "unknown message at byte 0: 0x99 is no BuWizz3 command or notification")
+    assert (e.code, e.offset, str(e), e.notes) == ("unknown_message", 0, "unknown key 0x99 at byte 0",
+                                                   ["0x99 is no BuWizz3 command or notification"])
     e = decode_error(buwizz3.decode, STATUS_68, direction="command")
-    assert e.code == "unknown_message" and str(e).endswith("(0x01 is the notification status)")
+    assert (e.code, str(e), e.notes) == ("unknown_message", "unknown key 0x01 at byte 0", ["0x01 is the notification status"])
     e = decode_error(buwizz3.decode, b"\x30" + bytes(8), direction="notification")
-    assert e.code == "unknown_message" and str(e).endswith("(0x30 is the command set_motor_data)")
+    assert (e.code, str(e), e.notes) == ("unknown_message", "unknown key 0x30 at byte 0", ["0x30 is the command set_motor_data"])
     # 0x23 with a length neither direction takes: decoded as the command, both named
     e = decode_error(buwizz3.decode, b"\x23\x00")
-    assert e.code == "too_long" and "0x23 is the command read_accel_calibration (1 byte) and the notification " \
-                                      "accel_calibration (25 bytes); 2 bytes given" in str(e)
+    assert str(e) == "read_accel_calibration: input too long (1 byte) at byte 1"
+    assert e.code == "too_long" and e.notes == ["0x23 is the command read_accel_calibration (1 byte) and the notification "
+                                                "accel_calibration (25 bytes); 2 bytes given"]
     with pytest.raises(ValueError, match="direction"):
         buwizz3.decode(b"\x01", direction="up")
     with pytest.raises(ValueError, match="buwizz3 only"):
@@ -113,22 +126,29 @@ def test_buwizz3_unknown_and_wrong_direction():
     (buwizz3, "set_motion_wakeup", {"enabled": 2}, "value_out_of_range", 1, "enabled",
      "set_motion_wakeup.enabled: value out of range (valid 0..1) at byte 1"),
     (buwizz3, "set_device_name", {"name": "Thirteen char"}, "value_out_of_range", 1, "name",
-     "set_device_name.name: value out of range (valid up to 12 bytes) at byte 1"),
+     "set_device_name.name: value out of range at byte 1"),
     # the offset is the first absent block's (encoded_size in core/detail/encode.hpp)
     (buwizz3, "set_led_status", {"blink": [{}, {}, {}, {}]}, "missing_field", 1, "colors",
      "set_led_status.colors: optional block present without the one before it at byte 1"),
     (buwizz3, "set_led_status", {"colors": [{}, {"g": 256}, {}, {}]}, "value_out_of_range", 5, "colors.g",
-     "set_led_status.colors.g: value out of range (valid 0..255) at byte 5"),
+     "set_led_status.colors: value out of range at byte 5"),
     (buwizz3, "charger_settings", {"data": bytes(129)}, "capacity_exceeded", 1, "data",
      "charger_settings.data: capacity exceeded at byte 1"),
     (buwizz3, "set_accel_calibration", {"factors": [1e39, 0, 0, 0, 0, 0]}, "value_out_of_range", 1, "factors",
-     "set_accel_calibration.factors: value out of range (valid a 32-bit float) at byte 1"),
+     "set_accel_calibration.factors: value out of range at byte 1"),
     (osp, "set_angle", {"angle": 65536}, "value_out_of_range", 5, "angle",
      "set_angle.angle: value out of range (valid 0..65535 raw) at byte 5"),
 ])
 def test_encode_errors(module, message, kwargs, code, offset, field, text):
     e = encode_error(module.encode, message, **kwargs)
     assert (e.code, e.offset, e.field, e.message, str(e)) == (code, offset, field, message, text)
+
+
+def test_encode_error_notes():
+    """What the line cannot say (a text's capacity, a record member's range, a float) comes as a note."""
+    assert encode_error(buwizz3.encode, "set_device_name", name="Thirteen char").notes == ["name holds up to 12 bytes of UTF-8"]
+    assert encode_error(buwizz3.encode, "set_led_status", colors=[{}, {"g": 256}, {}, {}]).notes == ["colors.g: valid 0..255"]
+    assert encode_error(buwizz3.encode, "set_accel_calibration", factors=[1e39] + [0] * 5).notes == ["factors holds a 32-bit float"]
 
 
 @pytest.mark.parametrize("module,args,kwargs,exc,words", [

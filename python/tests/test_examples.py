@@ -35,7 +35,7 @@ def test_buwizz3_example_with_fake_bleak(tmp_path):
                          "FAKE_BLEAK_LOG": str(log), "FAKE_BLEAK_NOTIFY": notify})
     assert p.returncode == 0, p.stderr
     assert p.stdout == "battery 13.00 V (13000 mV, medium)\n"
-    assert "notification not understood: unknown message at byte 0" in p.stderr
+    assert "notification not understood: unknown key 0x99 at byte 0" in p.stderr
     entries = [json.loads(line) for line in log.read_text().splitlines()]
     assert entries == [
         ["connect", "AA:BB:CC:DD:EE:FF"],

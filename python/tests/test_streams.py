@@ -12,7 +12,7 @@ STREAM = b"\x00" + VOLTAGE + UNKNOWN + b"\xff\x00" + STATUS
 EXPECTED = [
     {"type": "message", "protocol": "osp", "message": "voltage",
      "fields": {"centivolts": 1234, "centivolts_physical": {"value": 12.34, "unit": "V"}}},
-    {"type": "error", "protocol": "osp", "error": "unknown message at byte 2 (DEV 03 CMD 01 params 0A 0B 0C 0D)",
+    {"type": "error", "protocol": "osp", "error": "unknown key 0x03 0x01 at byte 2",
      "bytes": "FF AA 03 01 0A 0B 0C 0D 55 77", "code": "unknown_message", "offset": 2, "field": None},
     {"type": "message", "protocol": "osp", "message": "status",
      "fields": {"state": "charging", "flags": 5,

@@ -145,7 +145,7 @@ check(rc == 0 and out.startswith("buwizz3 read_accel_calibration"), "0x23, 1 byt
 rc, out, err = run("decode", "buwizz3", "23 00 00")
 check(rc == 1 and "accel_calibration (25 bytes)" in err and "3 bytes given" in err, f"0x23, 3 bytes: {err!r}")
 rc, out, err = run("decode", "buwizz3", "01 02", "--direction", "command")
-check(rc == 1 and "unknown message at byte 0" in err and "notification status" in err, f"01 as a command: {err!r}")
+check(rc == 1 and err == "error: unknown key 0x01 at byte 0\nhint: 0x01 is the notification status\n", f"01 as a command: {err!r}")
 rc, out, err = run("decode", "buwizz3", "--direction=notification", "AC")
 check(rc == 0 and out.startswith("buwizz3 charger_settings"), f"--direction=notification: {rc} {err!r}")
 
@@ -229,50 +229,75 @@ check('payload (text)  {"a":1}' in out and "payload         7B 22 61 22 3A 31 7D
 
 # ---- sign-magnitude NAVBOT frames: 0x8A is -118 to the robot (out of range), -10 in the document's spelling
 rc, out, err = run("decode", "navbot", "55 AA 10 00 00 00 00 8A 00 01 00 00 00 00 00 00 00 00 00 00")
-check(rc == 1 and "value out of range at byte 7: maneuver.pitch" in err and "-100..100" in err and "0x8A = -118" in err
-      and "0x8A = -10" in err and "maneuver.pitch = -118 (0x8A)" in err, f"sign-magnitude hint: {err!r}")
+check(rc == 1 and err.startswith("error: maneuver.pitch: value out of range (valid -100..100 %) at byte 7\n")
+      and "hint: pitch at byte 7 is -118 (0x8A)\n" in err and "0x8A = -118" in err and "0x8A = -10" in err,
+      f"sign-magnitude hint: {err!r}")
 rc, out, err = run("decode", "navbot", "55 AA 10 00 00 00 00 B2 00 01 00 00 00 00 00 00 00 00 00 00", "--json")
 doc = parse_json(out)
 check(rc == 0 and doc.get("fields", {}).get("pitch") == -78 and any("0xB2 = -50" in n for n in doc.get("notes", [])),
       f"sign-magnitude note: {out!r}")
 
-# ---- errors name the field, its valid values and the count
+# ---- errors: robowire::describe_error's line (the text C++ and Python give), then hints with the
+# value given, the lengths given, the marker expected (worked out by hand from the documents)
 BAD = [
-    (["decode", "buwizz3", "30 80 00 00 00 00 00 00 00"], 1, ["value out of range at byte 1", "set_motor_data.power[0]", "-127..127"]),
-    (["decode", "buwizz3", "30 00"], 1, ["input too short at byte 2", "set_motor_data is 9 bytes, 2 given"]),
-    (["decode", "buwizz3", "99"], 1, ["unknown message at byte 0"]),
-    (["decode", "buwizz3", "32 0A"], 1, ["value out of range at byte 1", "set_data_period.period_ms", "20..255"]),
-    (["decode", "buwizz3", "37 04"], 1, ["value is not a valid code at byte 1", "set_accel_lpf.setting", "hz_0_781", "hz_100"]),
-    (["decode", "buwizz3", "01" + " 00" * 60], 1, ["status is 54 or 68-129 bytes, 61 given"]),
-    (["decode", "navbot", "55 AA 10 00 00 00 00 00 8A 00 01 00 00 00 00 00 00 00 00 00 00 00"], 1, ["transcription error"]),
-    (["decode", "osp", "FF AA 02 14 01 00 00 00 55 00"], 1, ["bad trailer byte at byte 9: 0x00, expected 0x77", "status (DEV 02 CMD 14)"]),
-    (["decode", "osp", "FF AB 02 12 01 00 00 00 55 77"], 1, ["bad header byte at byte 1: 0xAB, expected 0xAA", "voltage (DEV 02 CMD 12)"]),
-    (["decode", "osp", "00 AA 02 12 01 00 00 00 55 77"], 1, ["bad header byte at byte 0: 0x00, expected 0xFF"]),
-    (["decode", "osp", "FF AA 02 12 01 00 00 00 56 77"], 1, ["bad trailer byte at byte 8: 0x56, expected 0x55"]),
-    (["decode", "osp", "FF AA 03 01 01 00 00 00 55 76"], 1, ["0x76, expected 0x77", "DEV 03 CMD 01 (no such message)"]),
+    (["decode", "buwizz3", "30 80 00 00 00 00 00 00 00"], 1, "set_motor_data.power: value out of range (valid -127..127 raw) at byte 1",
+     ["power[0] at byte 1 is -128 (0x80)"]),
+    (["decode", "buwizz3", "30 00"], 1, "set_motor_data: input too short (9 bytes) at byte 2", ["2 bytes given"]),
+    (["decode", "buwizz3", "99"], 1, "unknown key 0x99 at byte 0", ["0x99 is no BuWizz3 command or notification"]),
+    (["decode", "buwizz3", "32 0A"], 1, "set_data_period.period_ms: value out of range (valid 20..255 ms) at byte 1",
+     ["period_ms at byte 1 is 10 (0x0A)"]),
+    (["decode", "buwizz3", "37 04"], 1, "set_accel_lpf.setting: value is not a valid code at byte 1",
+     ["setting at byte 1 is 0x04, valid one of hz_0_781", "hz_100"]),
+    (["decode", "buwizz3", "01" + " 00" * 60], 1,
+     "status.pid_state: length matches no form of the message (54 or 68..129 bytes) at byte 54", ["61 bytes given"]),
+    (["decode", "navbot", "55 AA 10 00 00 00 00 00 8A 00 01 00 00 00 00 00 00 00 00 00 00 00"], 1,
+     "maneuver: input too long (20 bytes) at byte 20", ["22 bytes given", "transcription error"]),
+    (["decode", "osp", "FF AA 02 14 01 00 00 00 55 00"], 1, "status: bad trailer byte at byte 9",
+     ["byte 9 is 0x00, expected 0x77 (frames are FF AA DEV CMD P1..P4 55 77)"]),
+    (["decode", "osp", "FF AB 02 12 01 00 00 00 55 77"], 1, "voltage: bad header byte at byte 1", ["byte 1 is 0xAB, expected 0xAA"]),
+    (["decode", "osp", "00 AA 02 12 01 00 00 00 55 77"], 1, "voltage: bad header byte at byte 0", ["byte 0 is 0x00, expected 0xFF"]),
+    (["decode", "osp", "FF AA 02 12 01 00 00 00 56 77"], 1, "voltage: bad trailer byte at byte 8", ["byte 8 is 0x56, expected 0x55"]),
+    (["decode", "osp", "FF AA 03 01 01 00 00 00 55 76"], 1, "unknown key 0x03 0x01: bad trailer byte at byte 9",
+     ["byte 9 is 0x76, expected 0x77"]),
     # signed values in signed decimal (with the byte), unsigned in decimal, enum codes in hex
-    (["decode", "buwizz3", "30 00 00 00 00 00 80 00 00"], 1, ["set_motor_data.power[5] = -128 (0x80), valid -127..127"]),
-    (["decode", "navbot", "55 AA 10 00 00 00 00 65 00 01 00 00 00 00 00 00 00 00 00 00"], 1, ["maneuver.pitch = 101 (0x65)"]),
-    (["decode", "buwizz3", "32 0A"], 1, ["set_data_period.period_ms = 10 (0x0A)"]),
-    (["decode", "buwizz3", "37 04"], 1, ["set_accel_lpf.setting = 0x04"]),
-    (["decode", "osp", "FF AA 03 01 0A 0B 0C 0D 55 77"], 1, ["DEV 03 CMD 01 params 0A 0B 0C 0D"]),
-    (["encode", "buwizz3", "set_motor_data", "power=-128,0,0,0,0,0"], 1, ["value out of range at byte 1", "power[0]=-128", "-127..127"]),
-    (["encode", "buwizz3", "set_motor_data", "power=0,300,0,0,0,0"], 1, ["value out of range at byte 2", "power[1]=300"]),
-    (["encode", "buwizz3", "set_data_period", "period_ms=10"], 1, ["value out of range at byte 1", "period_ms=10", "20..255"]),
-    (["encode", "buwizz3", "set_motor_data", "power=10,20"], 1, ["power: 2 values given, 6 expected"]),
-    (["encode", "buwizz3", "status", "pu_motors=1,2,3"], 1, ["pu_motors: 3 values given, 16 expected", "type, velocity, absolute_position, position"]),
-    (["encode", "navbot", "maneuver", "switch_a=jump"], 1, ["unknown name", "switch_a=jump", "stop, start, start_touch_panel"]),
-    (["encode", "buwizz3", "set_led_status", "blink=1,15,15,0,0,8,5,5"], 1, ["give colors too"]),
-    (["encode", "navbot", "maneuver", "pitch=1", "pitch=2"], 2, ["field pitch given twice"]),
-    (["encode", "osp", "nosuch"], 2, ["unknown message nosuch"]),
-    (["encode", "osp", "soc", "nosuch=1"], 2, ["unknown field nosuch", "soc_raw"]),
+    (["decode", "buwizz3", "30 00 00 00 00 00 80 00 00"], 1, "set_motor_data.power: value out of range (valid -127..127 raw) at byte 6",
+     ["power[5] at byte 6 is -128 (0x80)"]),
+    (["decode", "navbot", "55 AA 10 00 00 00 00 65 00 01 00 00 00 00 00 00 00 00 00 00"], 1,
+     "maneuver.pitch: value out of range (valid -100..100 %) at byte 7", ["pitch at byte 7 is 101 (0x65)"]),
+    (["decode", "osp", "FF AA 03 01 0A 0B 0C 0D 55 77"], 1, "unknown key 0x03 0x01 at byte 2", ["DEV 03 CMD 01 params 0A 0B 0C 0D"]),
+    (["encode", "buwizz3", "set_motor_data", "power=-128,0,0,0,0,0"], 1,
+     "set_motor_data.power: value out of range (valid -127..127 raw) at byte 1", ["power[0]=-128 given", "-127..127"]),
+    (["encode", "buwizz3", "set_motor_data", "power=0,300,0,0,0,0"], 1,
+     "set_motor_data.power: value out of range (valid -127..127 raw) at byte 2", ["power[1]=300 given"]),
+    (["encode", "buwizz3", "set_data_period", "period_ms=10"], 1,
+     "set_data_period.period_ms: value out of range (valid 20..255 ms) at byte 1", ["period_ms=10 given"]),
+    (["encode", "buwizz3", "set_led_status", "colors=0,0,0,0,256,0,0,0,0,0,0,0"], 1,
+     "set_led_status.colors: value out of range at byte 5", ["colors[1].g=256 given, valid 0..255"]),
+    (["encode", "buwizz3", "set_device_name", "name=Thirteen char"], 1, "set_device_name.name: value out of range at byte 1",
+     ["name=Thirteen char given"]),
+    (["encode", "buwizz3", "set_motor_data", "power=10,20"], 1, "power: 2 values given, 6 expected (power=v1,...,v6)", []),
+    (["encode", "buwizz3", "status", "pu_motors=1,2,3"], 1, "pu_motors: 3 values given, 16 expected (4 x [type, velocity, absolute_position, position])", []),
+    (["encode", "navbot", "maneuver", "switch_a=jump"], 1, "maneuver.switch_a: value is not a valid code at byte 9",
+     ["switch_a=jump given", "stop, start, start_touch_panel"]),
+    (["encode", "buwizz3", "set_led_status", "blink=1,15,15,0,0,8,5,5"], 1,
+     "set_led_status.colors: optional block present without the one before it at byte 1", ["give colors too"]),
+    (["encode", "navbot", "maneuver", "pitch=1", "pitch=2"], 2, "field pitch given twice (pitch=1, pitch=2)", []),
+    (["encode", "osp", "nosuch"], 2, "unknown message nosuch (robowire list osp)", []),
 ]
-for args, status, texts in BAD:
+for args, status, line, hints in BAD:
     rc, out, err = run(*args)
-    check(rc == status and all(t in err for t in texts) and len(err.strip().splitlines()) == 1 and out == "",
+    lines = err.strip().splitlines()
+    hinted = {next((i for i, l in enumerate(lines[1:]) if h in l), -1) for h in hints}  # the hint line each text is on
+    check(rc == status and lines[:1] == ["error: " + line] and -1 not in hinted and len(lines) == 1 + len(hinted)
+          and all(l.startswith("hint: ") for l in lines[1:]) and out == "",
           f"bad input {args}: {rc} {err!r}")
+rc, out, err = run("encode", "osp", "soc", "nosuch=1")
+check(rc == 2 and "unknown field nosuch" in err and "soc_raw" in err, f"unknown field: {err!r}")
+# the same bad input gives the same line in the tool's text and JSON output as in C++ and Python
 rc, out, err = run("decode", "osp", "FF AA 03 01 0A 0B 0C 0D 55 77", "--json")
-check(rc == 1 and parse_json(out).get("type") == "error" and "unknown message" in parse_json(out).get("error", ""), "decode --json error")
+doc = parse_json(out)
+check(rc == 1 and doc.get("type") == "error" and doc.get("error") == "unknown key 0x03 0x01 at byte 2"
+      and doc.get("hints") == ["DEV 03 CMD 01 params 0A 0B 0C 0D"], f"decode --json error: {out!r}")
 
 # ---- list
 rc, out, _ = run("list")
@@ -302,7 +327,7 @@ stream = bytes.fromhex("00 55 77 FF FF AA 01 02 03 04 05 06 07 08 FF AA 02 11 FF
                        " FF AA 03 01 0A 0B 0C 0D 55 77")
 rc, out, err = run("scan", "osp", "-", stdin=stream)
 check(rc == 0 and out.count("osp soc") == 1 and out.count("osp voltage") == 1 and "frames 3," in out
-      and "unknown message" in out and "read as binary" in out, f"scan: {out!r}")
+      and "osp frame FF AA 03 01 0A 0B 0C 0D 55 77: unknown key 0x03 0x01 at byte 2\n" in out and "read as binary" in out, f"scan: {out!r}")
 rc, out, err = run("scan", "osp", "--json", stdin=stream)
 lines = [parse_json(l) for l in out.splitlines()]
 check([l.get("type") for l in lines] == ["message", "message", "error", "counters"], f"scan --json: only JSON lines: {out!r}")
@@ -385,7 +410,8 @@ check(rc == 1 and "line 18 (device to host): buwizz3 status" in out and "line 21
       and "line 23 (device to host): buwizz3 charger_settings" in out
       and "line 24 (host to device): buwizz3 check_charger_settings" in out
       and "line 25 (host to device): buwizz3 set_data_period" in out and "period_ms  50 ms" in out
-      and "error: line 22: value out of range at byte 1: set_motor_data.power[0] = -128 (0x80)" in err
+      and "error: line 22: set_motor_data.power: value out of range (valid -127..127 raw) at byte 1\n" in err
+      and "hint: line 22: power[0] at byte 1 is -128 (0x80)\n" in err
       and "read as nRF Connect (Android) log: lines 25, frames 6, decoded 5, errors 1" in err
       and "other characteristics 1" in err, f"Android log: {rc} {out!r} {err!r}")
 rc, out, err = run("decode", "buwizz3", "--file", "-", "--json", stdin=android_log.encode())
@@ -397,7 +423,7 @@ check([(d.get("type"), d.get("line"), d.get("direction"), d.get("message")) for 
       and docs[0].get("uuid") == APP and docs[0]["fields"].get("battery_voltage_raw") == 80
       and docs[2].get("bytes") == "30 80 00 00 00 00 00 00 00", f"Android log --json: {rc} {out!r}")
 rc, out, err = run("decode", "navbot", "--file", "-", stdin=android_log.encode())
-check(rc == 1 and out == "" and "error: line 15: bad header byte at byte 0" in err and "other characteristics 6" in err,
+check(rc == 1 and out == "" and "error: line 15: frame: bad header byte at byte 0" in err and "other characteristics 6" in err,
       f"navbot on a BuWizz3 log: the BuWizz3 characteristic's lines are skipped: {rc} {err!r}")
 # a log line given as the argument; a log with bare hex lines pasted in
 rc, out, err = run("decode", "buwizz3", f"I 10:12:09.700 Data written to {APP}, value: (0x) 32-32")
@@ -444,7 +470,7 @@ check(rc == 0 and [(d.get("line"), d.get("direction"), d.get("handle")) for d in
 hex_lines = "# frames from a capture\n30 7F 81 00 40 C0 01 21 3F\n\n0x32,0x32\n32 0G\n33\n"
 rc, out, err = run("decode", "buwizz3", "--file", "-", stdin=hex_lines.encode())
 check(rc == 1 and out.startswith("line 2: buwizz3 set_motor_data") and "line 4: buwizz3 set_data_period" in out
-      and "error: line 5: bad hex: 'G' at character 4" in err and "error: line 6: input too short at byte 1: set_ramp_rates" in err
+      and "error: line 5: bad hex: 'G' at character 4" in err and "error: line 6: set_ramp_rates: input too short (13 bytes) at byte 1" in err
       and "read as hex lines: lines 6, frames 4, decoded 2, errors 2" in err, f"hex lines: {rc} {out!r} {err!r}")
 rc, out, err = run("decode", "--file", "-", stdin=b"30 7F 81 00 40 C0 01 21 3F\n")
 check(rc == 2 and "line 1: which protocol?" in err, f"hex lines without protocol: {rc} {err!r}")
@@ -456,7 +482,7 @@ check(rc == 1 and "no frame in stdin: 2 lines" in err, f"no frame: {rc} {err!r}"
 # scan buwizz3: the same, errors in line on stdout, counters last
 rc, out, err = run("scan", "buwizz3", "-", stdin=android_log.encode())
 last = out.strip().splitlines()[-1]
-check(rc == 0 and "line 22: error: value out of range at byte 1" in out and last.startswith("lines 25, frames 6, decoded 5, errors 1")
+check(rc == 0 and "line 22: error: set_motor_data.power: value out of range (valid -127..127 raw) at byte 1" in out and last.startswith("lines 25, frames 6, decoded 5, errors 1")
       and last.endswith("stdin read as nRF Connect (Android) log"), f"scan buwizz3: {rc} {last!r}")
 rc, out, err = run("scan", "buwizz3", "-", stdin=bytes.fromhex("30 7F 81 00 40 C0 01 21 3F"))
 check(rc == 1 and "reads text" in err and "binary" in err, f"scan buwizz3 binary: {rc} {err!r}")
@@ -527,7 +553,7 @@ def monitor(json_mode):
 
 if shutil.which("socat"):
     rc, out, err = monitor(False)
-    check(rc == 0 and "osp voltage" in out and "osp status" in out and "osp device_type" in out and "unknown message" in out
+    check(rc == 0 and "osp voltage" in out and "osp status" in out and "osp device_type" in out and "unknown key 0x03 0x01 at byte 2" in out
           and "frames 4," in out, f"monitor over a pty: {out!r} {err!r}")
     rc, out, err = monitor(True)
     lines = [parse_json(l) for l in out.splitlines()]
@@ -676,6 +702,32 @@ for name, data, text in [
     errors = [f"line {d.get('line')}: {d.get('error')}" for d in docs if d.get("type") == "error"]
     check(rc == 1 and len(errors) == 1 and text in errors[0] and len(out) < 2000 and all(docs)
           and sum(d.get("message") == "set_data_period" for d in docs) == 2, f"{name} --json: {rc} {errors!r}")
+# every command that reads a file, for every protocol: no bad input answered with silence and exit 0
+VALID = {"osp": "FF AA 02 12 D2 04 00 00 55 77", "buwizz3": "32 32",
+         "navbot": "55 AA 10 00 00 00 00 00 00 01 00 00 00 00 00 00 00 00 00 00"}
+READERS = [(["decode", p, "--file"], p) for p in VALID] + [(["scan", p], p) for p in VALID]
+for cmd, proto in READERS:
+    name = " ".join(cmd[:2])
+    good = VALID[proto]
+    # a directory, a file that cannot be opened, a read error, a closed stdin: exit 1 and the reason
+    for path, why in [(td, "is a directory"), (os.path.join(td, "missing.txt"), "No such file or directory"),
+                      ("/proc/self/mem", "cannot read /proc/self/mem")]:
+        rc, out, err = run(*cmd, path)
+        check(rc == 1 and why in err and out == "", f"{name} {path}: {rc} {err!r}")
+    p_ = subprocess.run(["sh", "-c", 'exec "$0" "$@" <&-', TOOL, *cmd, "-"], capture_output=True, timeout=30)
+    check(p_.returncode == 1 and b"stdin is closed" in p_.stderr, f"{name} with stdin closed: {p_.returncode} {p_.stderr!r}")
+    # an empty file is empty, not binary
+    rc, out, err = run(*cmd, empty)
+    check("binary" not in out + err and ("empty" in out + err), f"{name} an empty file: {rc} {out!r} {err!r}")
+    # CR, LF and CRLF each end a line; a stray control byte costs its line only
+    for ends in ("\r", "\n", "\r\n"):
+        lines = [good, good[:5] + "\x01" + good[5:], good]
+        rc, out, err = run(*cmd, tmp("ends.txt", ends.join(lines) + ends), "--json")
+        docs = [parse_json(l) for l in out.splitlines()]
+        msgs = [d.get("line") for d in docs if d.get("type") == "message"]
+        errs = [d for d in docs if d.get("type") == "error"]
+        check(msgs == [1, 3] and len(errs) == 1 and errs[0].get("line") == 2 and "control byte 0x01" in errs[0].get("error", "")
+              and (rc == 0 if cmd[0] == "scan" else rc == 1), f"{name} line ends {ends!r}: {rc} {out!r} {err!r}")
 rc, out, err = run("decode", "buwizz3", "--file", "-", "--json", stdin=b"32 32\n32 \xc3\x28 32\n")
 check(parse_json(out.splitlines()[-1]).get("line") == 2 and "0xC3" in parse_json(out.splitlines()[-1]).get("error", ""),
       f"invalid UTF-8: a valid JSON error line: {out!r}")

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <catch2/catch.hpp>
+#include <string>
 #include <string_view>
 
 using namespace robowire;
@@ -27,4 +28,17 @@ TEST_CASE("uuid128 string and on-air order", "[core][uuid]") {
     CHECK(uuid128::parse("500592d1-74fb-4481-88b3-9919b1676e9").error() == error{errc::bad_length, 35});
     CHECK(uuid128::parse("500592d1_74fb-4481-88b3-9919b1676e93").error() == error{errc::value_out_of_range, 8});
     CHECK(uuid128::parse("500592g1-74fb-4481-88b3-9919b1676e93").error() == error{errc::value_out_of_range, 6});
+}
+
+TEST_CASE("uuid128::parse takes 36 characters only: shorter and longer are bad_length", "[core][uuid]") {
+    // the service UUID followed by more hex digits and dashes: every prefix of it, and a long one
+    std::string text = "500592d1-74fb-4481-88b3-9919b1676e93";
+    while (text.size() < 200) text += "-0123456789abcdef";
+    for (std::size_t n = 0; n <= 40; ++n) {
+        const auto r = uuid128::parse(std::string_view(text).substr(0, n));
+        CAPTURE(n);
+        if (n == 36) CHECK(r.value() == service);
+        else CHECK(r.error() == error{errc::bad_length, static_cast<std::uint16_t>(n)});
+    }
+    CHECK(uuid128::parse(text).error() == error{errc::bad_length, static_cast<std::uint16_t>(text.size())});
 }

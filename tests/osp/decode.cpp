@@ -171,6 +171,11 @@ TEST_CASE("osp::describe_error names the message that DEV and CMD name", "[osp]"
     const auto unknown = test::hex("FF AA 03 01 0A 0B 0C 0D 55 77");
     CHECK(describe_error(osp::decode(unknown), buf) == "unknown key 0x03 0x01 at byte 2");
     CHECK(describe_error(error{errc::unknown_message, 2}, unknown, buf) == "unknown key 0x03 0x01 at byte 2");
+    // an unknown DEV/CMD pair and a broken trailer: both said, the error's offset last
+    const auto unknown_cut = test::hex("FF AA 03 01 01 00 00 00 55 76");
+    CHECK(osp::decode(unknown_cut).error() == error{errc::bad_trailer, 9});
+    CHECK(describe_error(osp::decode(unknown_cut).error(), unknown_cut, buf) ==
+          "unknown key 0x03 0x01: bad trailer byte at byte 9");
     CHECK(describe_error(osp::decode(test::hex("FF AA 02 14 09 00 00 00 55 77")), buf) ==
           "status.state: value is not a valid code at byte 4");
     // markers or length wrong: the decode result keeps no DEV/CMD, the input still has them

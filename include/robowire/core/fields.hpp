@@ -30,13 +30,26 @@ struct field_info {
     bool is_enum = false;         // valid values are the enumeration's codes, not a range
     std::string_view unit{};      // physical unit of the field ("" if none)
     bool raw_is_physical = true;  // raw values (valid) are in `unit` (scale 1, offset 0)
+    bool has_range = true;        // valid applies: false for text, byte tails, records and floats
     constexpr explicit operator bool() const noexcept { return !name.empty(); }
 };
 
 namespace detail {
 template <class M, class F>
 constexpr field_info info_of(const F& f) noexcept {
-    return {table_v<M>.name, f.name, f.offset, f.size, f.valid, F::is_enum, f.unit.name, f.unit.raw_is_physical};
+    constexpr bool ranged = F::kind != wire_kind::text && F::kind != wire_kind::tail && F::kind != wire_kind::record &&
+                            F::kind != wire_kind::f32le;
+    field_info out{};
+    out.message = table_v<M>.name;
+    out.name = f.name;
+    out.offset = f.offset;
+    out.size = f.size;
+    out.valid = f.valid;
+    out.is_enum = F::is_enum;
+    out.unit = f.unit.name;
+    out.raw_is_physical = f.unit.raw_is_physical;
+    out.has_range = ranged;
+    return out;
 }
 }  // namespace detail
 
@@ -201,7 +214,7 @@ struct line_writer {
 // Writes "message.field: <error> (valid min..max unit) at byte N" (or
 // without the field part when no field is at the offset) into `buf`, cut to
 // fit; returns the text written. The range is in raw values: "raw" instead of
-// the unit when the unit scales them. too_short / too_long name no field and
+// the unit when the unit scales them; none for text, bytes, records, floats. too_short / too_long name no field and
 // give the lengths M takes: "status: input too short (54 or 68..129 bytes)
 // at byte 4"; bad_length names the optional block cut short and gives them
 // too. For logs; no heap.
@@ -230,7 +243,7 @@ constexpr std::string_view describe_error(const error& e, std::span<char> buf) n
         }
         w.put(runs.count == 1 && runs.run[0][0] == 1 && runs.run[0][1] == 1 ? " byte)" : " bytes)");
     }
-    if (f && !f.is_enum && (e.code == errc::value_out_of_range)) {
+    if (f && !f.is_enum && f.has_range && e.code == errc::value_out_of_range) {
         w.put(" (valid ");
         w.put_int(f.valid.min);
         w.put("..");
@@ -294,7 +307,8 @@ constexpr std::string_view describe_alternative(std::size_t index, const error& 
 namespace codec {
 // A dispatcher's error (docs/extending.md): the line of the message of
 // Variant that the key bytes of `in` (at KeyOffset..., increasing) name;
-// "unknown key 0x03 0x01 at byte 2" for a key no message has; the error
+// "unknown key 0x03 0x01 at byte 2" for a key no message has (another
+// error there: "unknown key 0x03 0x01: bad trailer byte at byte 9"); the error
 // alone ("input too short at byte 0") when `in` does not reach the key.
 template <class Variant, std::size_t... KeyOffset>
 constexpr std::string_view describe_keyed_error(const error& e, std::span<const std::uint8_t> in,
@@ -311,10 +325,15 @@ constexpr std::string_view describe_keyed_error(const error& e, std::span<const 
     if (index < std::variant_size_v<Variant>)
         return detail::describe_alternative<Variant>(index, e, buf,
                                                      std::make_index_sequence<std::variant_size_v<Variant>>{});
-    w.put(e.code == errc::unknown_message ? std::string_view("unknown key") : to_string(e.code));
+    // another error of a frame with an unknown key: "unknown key 0x03 0x01: bad trailer byte at byte 9"
+    w.put("unknown key");
     for (const std::uint8_t k : key) {
         w.put(" ");
         w.put_hex(k);
+    }
+    if (e.code != errc::unknown_message) {
+        w.put(": ");
+        w.put(to_string(e.code));
     }
     w.put_at(e);
     return w.text();
