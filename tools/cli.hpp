@@ -130,6 +130,10 @@ struct outcome {
     std::vector<std::string> hints;  // more lines for stderr (text) / "hints" (JSON)
     std::string message;             // message name (encode)
     byte_vector bytes;               // encoded frame
+    // encode: the library's error behind `error`, when there is one
+    std::string code;        // its name ("value_out_of_range"), "" when none
+    std::size_t offset = 0;  // its byte
+    std::string field;       // its field ("colors.g" in a record), "" when none
 };
 
 // ---- output.cpp: the output formats of decode, scan and monitor (--format, --json).

@@ -327,12 +327,25 @@ inline std::vector<std::string> split_commas(const std::string& s) {
     }
 }
 
+// A field's path without element indexes: "colors[1].g" -> "colors.g".
+inline std::string without_indexes(std::string_view path) {
+    std::string out;
+    bool in_index = false;
+    for (const char c : path) {
+        if (c == '[') in_index = true;
+        else if (c == ']') in_index = false;
+        else if (!in_index) out += c;
+    }
+    return out;
+}
+
 struct value_reader {
     std::vector<std::string> tokens;
     std::size_t pos = 0;
     std::string error;
     errc code = errc::ok;  // a library error (value_out_of_range, ...) at `byte`: encode_as gives its line
     std::size_t byte = 0;
+    std::string path;  // the value's field ("colors[1].g")
 };
 
 inline std::optional<std::int64_t> parse_integer(const std::string& t) {
@@ -373,6 +386,7 @@ bool parse_element(const F& f, E& v, value_reader& r, std::size_t byte, const st
                     std::string(why) + " at byte " + std::to_string(byte) + ": " + given + ", valid " + valid_of(f);
             r.code = code;
             r.byte = byte;
+            r.path = path;
             return false;
         };
         if constexpr (std::is_same_v<E, bool>) {
@@ -497,6 +511,10 @@ outcome encode_as(const std::vector<std::pair<std::string, std::string>>& values
             o.status = exit_bad_input;
             o.error = core_line<M>(robowire::error{r.code, static_cast<std::uint16_t>(r.byte)});
             o.hints.push_back(r.error);
+            o.code = std::string(robowire::name_of(r.code));
+            o.offset = r.byte;
+            o.field = without_indexes(r.path);
+
         } else if (!ok) {
             o.status = exit_bad_input;
             o.error = r.error;
@@ -507,6 +525,9 @@ outcome encode_as(const std::vector<std::pair<std::string, std::string>>& values
     if (!w) {
         o.status = exit_bad_input;
         o.error = core_line<M>(w.error());
+        o.code = std::string(robowire::name_of(w.error().code));
+        o.offset = w.error().offset;
+        if (const auto f = robowire::field_at<M>(w.error())) o.field = std::string(f.name);
         if (const auto f = robowire::field_at<M>(w.error()); f && w.error().code == errc::missing_field)
             o.hints.push_back("give " + std::string(f.name) + " too");
         return o;

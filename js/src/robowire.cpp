@@ -157,20 +157,9 @@ int rw_buwizz3_encode(const char* message, const char* pairs) {
     if (o.status != cli::exit_ok) {
         last.text = o.error;
         last.message = o.message;
-        // "<code's text> at byte N: <field>=<value>, valid ..." (a value the encoder refused)
-        for (const auto& c : robowire::errc_table) {
-            const std::string head = std::string(c.text) + " at byte ";
-            if (c.code == robowire::errc::ok || o.error.compare(0, head.size(), head) != 0) continue;
-            last.code = std::string(c.name);
-            std::size_t i = head.size();
-            for (; i < o.error.size() && o.error[i] >= '0' && o.error[i] <= '9'; ++i)
-                last.offset = last.offset * 10 + static_cast<std::size_t>(o.error[i] - '0');
-            if (o.error.compare(i, 2, ": ") == 0) {
-                const auto end = o.error.find_first_of("= ", i + 2);
-                last.field = o.error.substr(i + 2, end == std::string::npos ? std::string::npos : end - i - 2);
-            }
-            break;
-        }
+        last.code = o.code;  // the library's error, when the encoder refused a value
+        last.offset = o.offset;
+        last.field = o.field;
         return o.status;
     }
     last.bytes = std::move(o.bytes);
