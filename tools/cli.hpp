@@ -191,6 +191,8 @@ public:
         if (line_buffered_ || buf.size() >= (1u << 16)) flush();
     }
     void flush();
+    // Where flush() writes the records instead of stdout (the Python package's reader).
+    std::function<void(std::string_view)> sink;
     // CSV files written (out_dir), and the first write error ("" when none).
     std::vector<std::string> files;
     std::string write_error;

@@ -59,6 +59,7 @@ public:
             throw py::type_error("read_log takes a path or a file object (with read()), not " +
                                  std::string(py::str(py::type::of(source).attr("__name__"))));
         }
+        out_.sink = [this](std::string_view records) { records_.append(records); };
         decoder_ = std::make_unique<cli::line_decoder>(p_, in_.name, out_, opt_);
     }
 
@@ -66,15 +67,17 @@ public:
     // JSON lines, or CSV rows (the header first) in blocks of about 64 KB.
     py::str next() {
         const std::size_t want = out_.kind == cli::format_kind::csv ? (1u << 16) : 1;
-        while (out_.buf.size() < want && !done_) step();
+        while (records_.size() < want && !done_) {
+            step();
+            out_.flush();  // (to records_)
+        }
         if (error_) {
             error_->restore();
             error_.reset();
             throw py::error_already_set();
         }
-        const std::string_view v = out_.buf.view();
-        py::str s(v.data(), v.size());
-        out_.buf.clear();
+        py::str s(records_.data(), records_.size());
+        records_.clear();
         return s;
     }
     // The exit status robowire decode --file would have (None until the end).
@@ -131,7 +134,7 @@ private:
     cli::input_stream in_;
     std::unique_ptr<cli::line_decoder> decoder_;
     py::object file_;
-    std::string pending_;
+    std::string pending_, records_;
     std::size_t pending_at_ = 0, num_ = 0;
     std::unique_ptr<py::error_already_set> error_;
     bool done_ = false, stopped_ = false;
