@@ -220,7 +220,7 @@ def to_csv(records_or_path: Union[Source, Iterable[dict[str, Any]]], file: Union
                 out.write(text)
             return max(rows - 1, 0)
         header = False
-        for r in records_or_path:  # type: ignore[union-attr]
+        for r in records_or_path:
             if r.get("type") != "message" or r.get("message") != message:
                 continue
             if not header:
@@ -270,11 +270,12 @@ def plot(source: Source, fields: Iterable[str], out: Union[str, os.PathLike[str]
     wanted = [f.strip() for f in fields if f.strip()]
     if not wanted:
         raise ValueError("no field to plot (e.g. battery_voltage,motor_current)")
-    try:
-        import matplotlib
+    import importlib
 
+    try:  # (through importlib: matplotlib is optional, and typed in some versions only)
+        matplotlib = importlib.import_module("matplotlib")
         matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
+        plt = importlib.import_module("matplotlib.pyplot")
     except ImportError as e:
         raise ImportError("robowire plot needs matplotlib (Debian: apt-get install python3-matplotlib; "
                           "or pip install matplotlib)") from e
