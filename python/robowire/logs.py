@@ -341,9 +341,13 @@ def plot(source: Source, fields: Iterable[str], out: Union[str, os.PathLike[str]
         ax.set_ylabel(unit or "value")
         ax.grid(True, alpha=0.3)
         ax.legend(loc="best", fontsize="small", ncol=min(len(cs), 3))
-    axes[-1, 0].set_xlabel("time" if use_time else "line")
-    if use_time:
-        fig.autofmt_xdate()
+    if use_time:  # the time of day on the axis, the date (when the log gives one) in its label
+        dates = importlib.import_module("matplotlib.dates")
+        axes[-1, 0].xaxis.set_major_formatter(dates.DateFormatter("%H:%M:%S"))
+        days = sorted({t.date().isoformat() for t in times if t.year > 1900})
+        axes[-1, 0].set_xlabel("time" + (f" ({days[0]}" + (f" to {days[-1]}" if len(days) > 1 else "") + ")" if days else ""))
+    else:
+        axes[-1, 0].set_xlabel("line")
     fig.suptitle(title or f"{chosen[0]} {chosen[1]}: {os.fspath(source) if isinstance(source, (str, os.PathLike)) else ''}")
     fig.tight_layout()
     fig.savefig(out)

@@ -90,6 +90,16 @@ def test_read_log_android_sample_by_hand(logs):
     assert records[3]["fields"]["name"] == 'My,"B"'
 
 
+def test_sample_session_figures(logs, tmp_path):
+    # what docs/python.md says of the sample session
+    records = robowire.read_log(logs["session.txt"])
+    volts = [r["fields"]["battery_voltage"]["value"] for r in records if r.get("message") == "status"]
+    assert len(volts) == 6000 and volts[0] == 12.5 and 10.4 <= volts[-1] <= 10.6
+    assert {k: records.counters[k] for k in ("lines", "frames", "decoded", "errors")} == {
+        "lines": 6018, "frames": 6011, "decoded": 6011, "errors": 0}
+    assert robowire.to_csv(logs["session.txt"], tmp_path / "status.csv", message="status") == 6000
+
+
 def test_read_log_file_objects(logs):
     expected = list(robowire.read_log(logs["session.txt"]))
     with open(logs["session.txt"], "rb") as fh:
