@@ -177,7 +177,7 @@ def test_shortest_is_to_chars():
     assert [_shortest(v) for v in (0.5, -2.5, 100.0, 1e20, 123456789012.0, 1e-05, 0.0001, 0.001, 1e15, 0.0, -0.0,
                                    1e16 + 2, 123456.5, 1e5)] == [
         "0.5", "-2.5", "100", "1e+20", "123456789012", "1e-05", "1e-04", "0.001", "1e+15", "0", "-0",
-        "10000000000000002", "123456.5", "100000"]
+        "10000000000000002", "123456.5", "1e+05"]
 
 
 def test_plot_draws_a_png(logs, tmp_path):
@@ -208,3 +208,19 @@ def test_plot_without_matplotlib(logs, tmp_path, monkeypatch):
     monkeypatch.setitem(sys.modules, "matplotlib", None)
     with pytest.raises(ImportError, match="python3-matplotlib"):
         robowire.plot(logs["android.txt"], ["battery_voltage"], tmp_path / "z.png")
+
+
+@pytest.mark.parametrize("protocol", ["buwizz3", "navbot", "osp"])
+def test_to_csv_from_records_every_vector(cli, tmp_path, protocol):
+    # the golden vectors as hex lines: every message's table from records equals the tool's
+    from vectors import CASES as VECTORS
+
+    path = tmp_path / f"{protocol}.txt"
+    path.write_text("".join(c[2] + "\n" for c in VECTORS if c[0] == protocol))
+    records = list(robowire.read_log(path, protocol))
+    messages = sorted({r["message"] for r in records if r["type"] == "message"})
+    assert len(messages) >= 2
+    for message in messages:
+        buf = io.StringIO()
+        robowire.to_csv(iter(records), buf, message=message)
+        assert buf.getvalue() == cli_csv(cli, path, message, protocol), message
