@@ -13,7 +13,7 @@ measures, each in a fresh Python process (so that the peak RSS is its own):
 CPU time (user + system, from getrusage) and microseconds per line; the peak
 RSS (ru_maxrss) and what `import robowire` alone takes.
 --check exits 1 unless, at the largest N, read_log takes at most --max-us
-microseconds of CPU per line (default 40, what docs/python.md states) and its
+microseconds of CPU per line (default 25; docs/python.md gives about 13) and its
 peak RSS is within 2 MB of the smallest N's (memory does not grow with the log).
 """
 import argparse
@@ -68,7 +68,7 @@ def main():
     a.add_argument("--lines", default="10000,100000")
     a.add_argument("--cli", help="the command-line tool, for comparison")
     a.add_argument("--check", action="store_true")
-    a.add_argument("--max-us", type=float, default=40.0)
+    a.add_argument("--max-us", type=float, default=25.0)
     args = a.parse_args()
     sizes = [int(x) for x in args.lines.split(",")]
     results = {}
