@@ -14,6 +14,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -193,6 +195,8 @@ public:
         if (line_buffered_ || buf.size() >= (1u << 16)) flush();
     }
     void flush();
+    // Where flush() writes the records instead of stdout (the Python package's reader).
+    std::function<void(std::string_view)> sink;
     // CSV files written (out_dir), and the first write error ("" when none).
     std::vector<std::string> files;
     std::string write_error;
@@ -278,6 +282,10 @@ public:
     bool open(const std::string& path, std::string& error);
     // Reads `text` instead (an argument).
     void open_text(std::string_view text, std::string name);
+    // Reads from `source` instead (the Python package's file objects): it fills
+    // at most n bytes at p and returns how many, 0 at the end of the input
+    // (a read error: 0 and `error` set).
+    void open_source(std::function<std::size_t(char* p, std::size_t n)> source, std::string name);
     std::string name;  // "stdin", the path, or what open_text was given
     // The first bytes (up to 4 KB; fewer at the end of the input or once a line has ended), left to read.
     std::span<const std::uint8_t> peek();
@@ -296,6 +304,7 @@ public:
 
 private:
     bool fill();  // reads more (false: end of input)
+    std::function<std::size_t(char*, std::size_t)> source_;
     int fd_ = -1;
     bool own_ = false, eof_ = false, skip_lf_ = false;
     std::string buf_;
@@ -323,6 +332,23 @@ struct log_options {
     direction forced = direction::any;
     bool scan = false;                       // scan: errors on stdout too, NAVBOT reassembly, counters last
     std::optional<time_point> since, until;  // only frames logged in [since, until]
+    bool quiet = false;  // nothing on stderr: errors as records only, the summary as a counters record
+};
+// The lines of one input, fed one by one (decode_lines; the Python package's read_log).
+class line_decoder {
+public:
+    line_decoder(const protocol* p, std::string_view name, output& out, const log_options& opt);
+    ~line_decoder();
+    line_decoder(const line_decoder&) = delete;
+    line_decoder& operator=(const line_decoder&) = delete;
+    // Line `num` (from 1) as input_stream::next_line gives it; false: stop (a usage error was reported).
+    bool feed(std::size_t num, std::string_view line, std::size_t length, bool ended);
+    // The end of the input: the lines held back, the summary. Returns the exit status.
+    int finish();
+
+private:
+    struct impl;
+    std::unique_ptr<impl> impl_;
 };
 // Decodes every line of `in` that holds a frame as it is read, with `p`
 // (nullptr: the characteristic UUID of each line picks the protocol). decode:

@@ -54,6 +54,11 @@ void input_stream::open_text(std::string_view text, std::string n) {
     eof_ = true;
 }
 
+void input_stream::open_source(std::function<std::size_t(char*, std::size_t)> source, std::string n) {
+    name = std::move(n);
+    source_ = std::move(source);
+}
+
 bool input_stream::fill() {
     if (eof_) return false;
     if (pos_ > 0 && pos_ == buf_.size()) {
@@ -63,12 +68,18 @@ bool input_stream::fill() {
         buf_.erase(0, pos_);
         pos_ = 0;
     }
-    if (flush_before_wait) {
+    if (flush_before_wait && fd_ >= 0) {
         pollfd pfd{fd_, POLLIN, 0};
         if (::poll(&pfd, 1, 0) == 0) flush_before_wait->flush();
     }
     const std::size_t old = buf_.size();
     buf_.resize(old + block);
+    if (source_) {
+        const std::size_t n = std::min(source_(buf_.data() + old, block), block);
+        buf_.resize(old + n);
+        if (n == 0) eof_ = true;
+        return n > 0;
+    }
     for (;;) {
         const ssize_t n = ::read(fd_, buf_.data() + old, block);
         if (n > 0) {

@@ -377,7 +377,7 @@ public:
                                         : "") +
                               (c_.outside ? "; " + std::to_string(c_.outside) + " outside the time range" : "") + ")");
             out_.error({}, why, "");
-            err_line("error: " + why);
+            say("error: " + why);
             return exit_bad_input;
         }
         summary();
@@ -385,6 +385,9 @@ public:
     }
 
 private:
+    void say(const std::string& s) const {
+        if (!opt_.quiet) err_line(s);
+    }
     std::string source() const { return source_.empty() ? (log_ ? "nRF Connect log" : "hex lines") : source_; }
 
     bool stage_desktop(std::size_t num, parsed_line& pl) {
@@ -516,7 +519,7 @@ private:
             record_meta m;
             m.line = num;
             out_.error(m, why, "");
-            err_line("error: " + why);
+            say("error: " + why);
             stopped_ = true;
             return false;
         }
@@ -553,8 +556,8 @@ private:
         const std::string bytes = pl.bytes.empty() ? std::string() : shorten(hex_of(pl.bytes), 200);
         if (!bytes.empty()) extra.emplace_back("bytes", bytes);
         if (out_.error(meta, error, text, extra, hints)) return;
-        err_line("error: line " + std::to_string(num) + ": " + error);
-        for (const auto& h : hints) err_line("hint: line " + std::to_string(num) + ": " + h);
+        say("error: line " + std::to_string(num) + ": " + error);
+        for (const auto& h : hints) say("hint: line " + std::to_string(num) + ": " + h);
     }
 
     void reassemble(std::size_t num, const parsed_line& pl) {
@@ -670,7 +673,10 @@ private:
                 if (ch == '_') ch = ' ';
             text += (text.empty() ? "" : ", ") + name + " " + std::to_string(v);
         }
-        if (opt_.scan && out_.counters(cs, source(), text + "; " + name_ + " read as " + source() + "\n")) return;
+        if ((opt_.scan || opt_.quiet) &&
+            out_.counters(cs, source(), text + "; " + name_ + " read as " + source() + "\n"))
+            return;
+        if (opt_.quiet) return;
         out_.flush();
         err_line(name_ + ": read as " + source() + ": " + text);
     }
@@ -725,8 +731,19 @@ std::optional<time_point> parse_time_point(std::string_view s) {
     return t;
 }
 
+struct line_decoder::impl {
+    runner r;
+};
+line_decoder::line_decoder(const protocol* p, std::string_view name, output& out, const log_options& opt)
+    : impl_(new impl{runner(p, name, opt, out)}) {}
+line_decoder::~line_decoder() = default;
+bool line_decoder::feed(std::size_t num, std::string_view line, std::size_t length, bool ended) {
+    return impl_->r.feed(num, line, length, ended);
+}
+int line_decoder::finish() { return impl_->r.finish(); }
+
 int decode_lines(const protocol* p, input_stream& in, output& out, const log_options& opt) {
-    runner r(p, in.name, opt, out);
+    line_decoder r(p, in.name, out, opt);
     in.flush_before_wait = &out;
     std::string_view line;
     std::size_t length = 0, num = 0;

@@ -144,13 +144,17 @@ output::~output() {
 }
 
 void output::flush() {
-    write_all(buf, stdout, write_error, "stdout");
+    if (sink) {
+        if (!buf.empty()) sink(buf.view());
+    } else {
+        write_all(buf, stdout, write_error, "stdout");
+    }
     buf.clear();
     for (table* t : tables_) {
         write_all(t->buf, t->f, write_error, t->path);
         t->buf.clear();
     }
-    std::fflush(stdout);
+    if (!sink) std::fflush(stdout);
 }
 
 buffer* output::find_table(std::string_view protocol, std::string_view message, bool& found) {

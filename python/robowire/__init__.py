@@ -3,6 +3,7 @@
     from robowire import buwizz3, navbot, osp
     buwizz3.decode(data)            # -> dict, as `robowire decode --json` prints it
     buwizz3.encode("set_motor_data", power=[100, -100, 0, 0, 0, 0])  # -> bytes
+    read_log("session.txt")         # -> the records of `robowire decode --file session.txt --json`
 """
 from __future__ import annotations
 
@@ -16,11 +17,13 @@ except ImportError as _e:  # the sources in python/robowire, not the installed p
     raise ImportError(f"robowire's compiled part is missing in {__path__[0]}: this is the source tree, not the "
                       "installed package; run from another directory, or install it (docs/python.md)") from _e
 from . import buwizz3, navbot, osp  # noqa: E402 (after _robowire)
+from .logs import LogRecords, csv_columns, plot, read_log, to_csv  # noqa: E402
 
 if TYPE_CHECKING:
     from typing import Any, Optional
 
-__all__ = ["DecodeError", "EncodeError", "buwizz3", "navbot", "osp", "schema", "error_codes", "__version__"]
+__all__ = ["DecodeError", "EncodeError", "buwizz3", "navbot", "osp", "schema", "error_codes", "__version__",
+           "read_log", "to_csv", "csv_columns", "plot", "LogRecords"]
 __version__ = "0.1.0"
 
 #: Every error code (the values of DecodeError.code / EncodeError.code) and its text.

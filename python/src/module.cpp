@@ -1,7 +1,7 @@
 // robowire._robowire: the extension behind the robowire package. One
 // submodule per protocol (buwizz3.cpp, navbot.cpp, osp.cpp, each its own
-// translation unit so that they compile in parallel), plus the schema and
-// the error codes.
+// translation unit so that they compile in parallel), plus the schema, the
+// error codes and the log reader (logs.cpp, on the command-line tool's).
 #include "codec.hpp"
 #include "protocols.hpp"
 
@@ -28,4 +28,5 @@ PYBIND11_MODULE(_robowire, m) {
     rwpy::init_buwizz3(buwizz3);
     rwpy::init_navbot(navbot);
     rwpy::init_osp(osp);
+    rwpy::init_logs(m);
 }
