@@ -142,7 +142,7 @@ void status_decode_into(benchmark::State& state) {
     for (auto _ : bench::measure(state)) {
         for (const auto& item : in) {
             auto e = robowire::decode_into(s, std::span(item).first(N));
-            benchmark::DoNotOptimize(e);
+            bench::consume(e);
             benchmark::ClobberMemory();  // the escaped output is written
         }
     }
@@ -205,7 +205,7 @@ void status_decode_into_rw(benchmark::State& state) {
         for (std::size_t i = 0; i < count; ++i) {
             const std::size_t n = RuntimeLength ? len[i] : N;
             auto e = robowire::decode_into(s, std::span(in[i]).first(n));
-            benchmark::DoNotOptimize(e);
+            bench::consume(e);
             benchmark::ClobberMemory();  // the escaped output is written
         }
     }

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <new>
+#include <type_traits>
 #include <vector>
 
 namespace bench {
@@ -65,6 +66,13 @@ void consume(const Result& r) {
         const auto error = r.error();
         benchmark::DoNotOptimize(error);
     }
+}
+
+// Reads an error returned alone (decode_into, encode_to's error): the
+// outcome, and the error of a failure, as consume(hw::error) reads the baselines'.
+template <class Error>
+requires(std::is_class_v<Error> && !requires(const Error& e) { e.has_value(); }) void consume(const Error& e) {
+    if (e) benchmark::DoNotOptimize(e);
 }
 
 // ---- the hand-written baselines' error report

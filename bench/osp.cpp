@@ -252,7 +252,7 @@ void scan_robowire(benchmark::State& state, kind k) {
     for (auto _ : bench::measure(state)) {
         osp::scanner sc;
         for (std::size_t i = 0; i < s.size(); i += chunk)
-            sc.feed(std::span(s).subspan(i, std::min(chunk, s.size() - i)), [&](osp::scanner::frame_bytes f) {
+            sc.feed(std::span(s.data() + i, std::min(chunk, s.size() - i)), [&](osp::scanner::frame_bytes f) {
                 found += f[3];
             });
         benchmark::DoNotOptimize(found);

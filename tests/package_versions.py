@@ -2,7 +2,7 @@
 """The version is written once, in include/robowire/core/config.hpp
 (ROBOWIRE_VERSION_MAJOR, _MINOR, _PATCH); CMake reads it there. Every other
 file that carries it must say the same: meson.build, library.json (PlatformIO),
-library.properties (Arduino), idf_component.yml (ESP-IDF), the Python package.
+library.properties (Arduino), idf_component.yml (ESP-IDF), the Python and JavaScript packages.
 Exits 1 naming each file that differs."""
 import os
 import re
@@ -29,6 +29,8 @@ carriers = {
     "idf_component.yml": r'^version:\s*"([^"]*)"',
     "python/pyproject.toml": r'^version\s*=\s*"([^"]*)"',
     "python/robowire/__init__.py": r'^__version__\s*=\s*"([^"]*)"',
+    "js/package.json": r'^  "version":\s*"([^"]*)"',
+    "js/package-lock.json": r'^  "version":\s*"([^"]*)"',
 }
 errors = []
 for path, pattern in carriers.items():

@@ -6,7 +6,7 @@
 # tests/CMakeLists.txt and tests/meson.build, so a new test file or a new
 # protocol's test folder needs no list edited.
 cd "$(dirname "$0")" || exit 1
-not_unit=" alloc cli compile_fail consumer consumers docs handler instantiation mixed_modes wireshark "
+not_unit=" alloc cli compile_fail consumer consumers docs handler instantiation mixed_modes wasm wireshark "
 for f in */*.cpp; do
   [ -e "$f" ] || continue
   case "$not_unit" in *" ${f%%/*} "*) continue ;; esac

@@ -188,7 +188,8 @@ constexpr void make_element(const F& f, E& v, source& s, std::uint8_t bad) noexc
         const std::size_t n = s.integral_in_range<std::size_t>(0, E::capacity());
         for (std::size_t i = 0; i < n; ++i) (void)v.push_back(s.byte());
     } else if constexpr (std::is_same_v<E, float>) {
-        v = std::bit_cast<float>(s.integral<std::uint32_t>());  // any bit pattern: NaNs and infinities too
+        v = robowire::detail::builtin_bit_cast<float>(
+            s.integral<std::uint32_t>());  // any bit pattern: NaNs and infinities too
     } else if constexpr (std::is_same_v<E, bool>) {
         if (bad != 0) (void)s.byte();
         v = s.boolean();
@@ -428,12 +429,12 @@ constexpr void mutate_element(const F& f, E& v, std::size_t offset, rng& r, raw_
                                       std::numeric_limits<float>::quiet_NaN(),
                                       std::numeric_limits<float>::max(),
                                       std::numeric_limits<float>::denorm_min()};
-        const auto u = std::bit_cast<std::uint32_t>(v);
+        const auto u = robowire::detail::builtin_bit_cast<std::uint32_t>(v);
         switch (r.below(4)) {
-        case 0: v = std::bit_cast<float>(u + 1); break;  // the next float (by bit pattern)
-        case 1: v = std::bit_cast<float>(u - 1); break;
+        case 0: v = robowire::detail::builtin_bit_cast<float>(u + 1); break;  // the next float (by bit pattern)
+        case 1: v = robowire::detail::builtin_bit_cast<float>(u - 1); break;
         case 2: v = specials[r.below(std::size(specials))]; break;
-        default: v = std::bit_cast<float>(static_cast<std::uint32_t>(r.next())); break;
+        default: v = robowire::detail::builtin_bit_cast<float>(static_cast<std::uint32_t>(r.next())); break;
         }
     } else if constexpr (std::is_enum_v<E>) {
         constexpr auto& codes = enum_table_v<E>;

@@ -141,10 +141,10 @@ TEST_CASE("table-driven encode rejects what it cannot send", "[core][table]") {
 
 TEST_CASE("round trip keeps NaN payloads", "[core][table]") {
     msg x = full_msg;
-    x.gain = std::bit_cast<float>(0x7FC01234u);
+    x.gain = robowire::detail::builtin_bit_cast<float>(0x7FC01234u);
     const auto wire = encode(x).value();
     const auto back = decode<msg>(wire).value();
-    CHECK(std::bit_cast<std::uint32_t>(*back.gain) == 0x7FC01234u);
+    CHECK(robowire::detail::builtin_bit_cast<std::uint32_t>(*back.gain) == 0x7FC01234u);
     CHECK(encode(back).value() == wire);
 }
 

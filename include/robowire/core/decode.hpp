@@ -104,11 +104,11 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, std::span<const std::
         const auto known = in.size() > extent ? in.first(extent) : in;
         if (!decode_record<M>(out, known, 0, err, fields)) return err;
         if constexpr (reports_trailing<M>) out.ignored_trailing_bytes = in.size() - known.size();
-        return err;
+        return {};  // a constant, not err: compilers then build no error on the good path
     }
     if (!check_record<M>(in, 0, err, fields)) return err;  // reads the first `extent` bytes only
     write_body(out, in);
-    return err;
+    return {};
 }
 // The error of an input that fails input_ok's test: the first wrong fixed
 // byte `in` has, else the length's. Out of line (the good path sets up no error).
@@ -130,7 +130,8 @@ inline constexpr bool fixed_within_min_v = [] {
 }();
 // The fixed bytes of M but the one at offset Known, as masked words of the
 // shortest input (ROBOWIRE_COPY_RUNS targets): each word a load, an xor and an
-// and, as a hand-written decoder compares its markers.
+// and, as a hand-written decoder compares its markers. The words are as
+// narrow as takes no more of them (a 4-byte header: one 32-bit compare).
 struct fixed_word {
     std::size_t start = 0;
     std::uint64_t mask = 0, value = 0;
@@ -138,19 +139,26 @@ struct fixed_word {
 template <std::size_t Known, class M>
 inline constexpr auto fixed_words_v = [] {
     constexpr std::size_t min = table_v<M>.min_size();
-    constexpr std::size_t width = min >= 8 ? 8 : min >= 4 ? 4 : min >= 2 ? 2 : 1;
     struct words {
         std::array<fixed_word, fixed_count_v<M> + 1> w{};
         std::size_t count = 0, width = 0;
-    } r{};
-    r.width = width;
-    for (const auto& f : table_v<M>.fixed) {
-        if (f.offset == Known) continue;
-        bool covered = false;
-        for (std::size_t k = 0; k < r.count; ++k)
-            covered = covered || (f.offset >= r.w[k].start && f.offset < r.w[k].start + width);
-        if (!covered) r.w[r.count++].start = f.offset + width <= min ? f.offset : min - width;
-    }
+    };
+    constexpr auto cover = [](std::size_t width) {
+        words r{};
+        r.width = width;
+        for (const auto& f : table_v<M>.fixed) {
+            if (f.offset == Known) continue;
+            bool covered = false;
+            for (std::size_t k = 0; k < r.count; ++k)
+                covered = covered || (f.offset >= r.w[k].start && f.offset < r.w[k].start + width);
+            if (!covered) r.w[r.count++].start = f.offset + width <= min ? f.offset : min - width;
+        }
+        return r;
+    };
+    constexpr std::size_t widest = min >= 8 ? 8 : min >= 4 ? 4 : min >= 2 ? 2 : 1;
+    std::size_t width = widest;
+    for (std::size_t w = widest / 2; w >= 1 && cover(w).count == cover(widest).count; w /= 2) width = w;
+    words r = cover(width);
     for (std::size_t k = 0; k < r.count; ++k)
         for (const auto& f : table_v<M>.fixed)
             if (f.offset != Known && f.offset >= r.w[k].start && f.offset < r.w[k].start + width) {
@@ -163,7 +171,12 @@ inline constexpr auto fixed_words_v = [] {
 template <std::size_t Known, class M, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE bool fixed_words_match(const std::uint8_t* in, std::index_sequence<K...>) noexcept {
     constexpr auto& words = fixed_words_v<Known, M>;
-    (void)in;  // no fixed byte left to compare
+    (void)in;                           // no fixed byte left to compare
+    if constexpr (sizeof...(K) == 1) {  // one compare (with a memory operand where the word is whole)
+        std::uint64_t w = 0;
+        std::memcpy(&w, in + words.w[0].start, words.width);
+        return (w & words.w[0].mask) == words.w[0].value;
+    }
     std::uint64_t diff = 0;
     (
         (void)[&] {

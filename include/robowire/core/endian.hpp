@@ -21,6 +21,27 @@ inline constexpr bool is_wire_scalar_v =
     std::is_same_v<T, std::int16_t> || std::is_same_v<T, std::uint32_t> || std::is_same_v<T, std::int32_t> ||
     std::is_same_v<T, float>;
 
+// std::bit_cast through the compiler's builtin (g++ >= 11, clang++ >= 9,
+// MSVC), so that a standard library without std::bit_cast is enough
+// (emscripten 3.1.6's libc++). constexpr; To and From: same size, trivially copyable.
+template <class To, class From>
+[[nodiscard]] constexpr To builtin_bit_cast(const From& from) noexcept {
+    static_assert(sizeof(To) == sizeof(From), "builtin_bit_cast: sizes differ");
+    static_assert(std::is_trivially_copyable_v<To> && std::is_trivially_copyable_v<From>,
+                  "builtin_bit_cast: not trivially copyable");
+#if defined(_MSC_VER)
+    return __builtin_bit_cast(To, from);
+#elif defined(__has_builtin)
+#if __has_builtin(__builtin_bit_cast)
+    return __builtin_bit_cast(To, from);
+#else
+    return std::bit_cast<To>(from);
+#endif
+#else
+    return std::bit_cast<To>(from);
+#endif
+}
+
 template <std::size_t N>
 struct uint_of_size;
 template <>
@@ -72,7 +93,7 @@ template <class T>
     }
     U u = 0;
     for (std::size_t i = 0; i < sizeof(T); ++i) u = static_cast<U>(u | static_cast<U>(static_cast<U>(p[i]) << (8 * i)));
-    return std::bit_cast<T>(u);
+    return detail::builtin_bit_cast<T>(u);
 }
 
 // Writes v little-endian to p[0..sizeof(T)).
@@ -86,7 +107,7 @@ constexpr void store_le(std::uint8_t* p, T v) noexcept {
         }
     }
     using U = typename detail::uint_of_size<sizeof(T)>::type;
-    const U u = std::bit_cast<U>(v);
+    const U u = detail::builtin_bit_cast<U>(v);
     for (std::size_t i = 0; i < sizeof(T); ++i) p[i] = static_cast<std::uint8_t>(u >> (8 * i));
 }
 

@@ -41,31 +41,15 @@ public:
 
     constexpr std::size_t size() const noexcept { return frames_for(payload_.size()); }
     // Frame i (0-based). Precondition: i < size().
-    constexpr bytes<frame_size> operator[](std::size_t i) const noexcept {
-        auto out = bytes<frame_size>::zeros(frame_size);
-        out[0] = header1;
-        out[1] = header2;
-        out[2] = command_;
-        out[3] = static_cast<std::uint8_t>(size() - 1 - i);
-        const std::size_t from = i * payload_size;
-        if (std::is_constant_evaluated() || ROBOWIRE_OPTIMIZE_SIZE) {
-            for (std::size_t k = 0; k < payload_size && from + k < payload_.size(); ++k)
-                out[5 + k] = static_cast<std::uint8_t>(payload_[from + k]);
-        } else {  // two fixed-size copies, not a byte loop that checks the end at every byte
-            const std::size_t left = from < payload_.size() ? payload_.size() - from : 0;
-            codec::copy_small(out.data() + 5, reinterpret_cast<const std::uint8_t*>(payload_.data() + from),
-                              left < payload_size ? left : payload_size);
-        }
-        return out;
-    }
+    constexpr bytes<frame_size> operator[](std::size_t i) const noexcept { return frame_at(i, size()); }
 
     class iterator {
     public:
         using value_type = bytes<frame_size>;
         using difference_type = std::ptrdiff_t;
         constexpr iterator() noexcept = default;
-        constexpr iterator(const basic_fragmenter* f, std::size_t i) noexcept : f_(f), i_(i) {}
-        constexpr value_type operator*() const noexcept { return (*f_)[i_]; }
+        constexpr iterator(const basic_fragmenter* f, std::size_t i) noexcept : f_(f), i_(i), n_(f ? f->size() : 0) {}
+        constexpr value_type operator*() const noexcept { return f_->frame_at(i_, n_); }
         constexpr iterator& operator++() noexcept {
             ++i_;
             return *this;
@@ -80,6 +64,7 @@ public:
     private:
         const basic_fragmenter* f_ = nullptr;
         std::size_t i_ = 0;
+        std::size_t n_ = 0;  // f_->size(), worked out once
     };
     constexpr iterator begin() const noexcept { return {this, 0}; }
     constexpr iterator end() const noexcept { return {this, size()}; }
@@ -87,6 +72,25 @@ public:
 private:
     constexpr basic_fragmenter(std::uint8_t command, std::span<const Byte> payload) noexcept
         : command_(command), payload_(payload) {}
+    // Frame i of `count` (size()).
+    constexpr bytes<frame_size> frame_at(std::size_t i, std::size_t count) const noexcept {
+        auto out = bytes<frame_size>::zeros(frame_size);
+        out[0] = header1;
+        out[1] = header2;
+        out[2] = command_;
+        out[3] = static_cast<std::uint8_t>(count - 1 - i);
+        const std::size_t from = i * payload_size;
+        if (std::is_constant_evaluated() || ROBOWIRE_OPTIMIZE_SIZE) {
+            for (std::size_t k = 0; k < payload_size && from + k < payload_.size(); ++k)
+                out[5 + k] = static_cast<std::uint8_t>(payload_[from + k]);
+        } else if (from + payload_size <= payload_.size()) {  // a whole frame's payload: a constant-size copy
+            std::memcpy(out.data() + 5, payload_.data() + from, payload_size);
+        } else {  // the last frame's: two fixed-size copies, not a byte loop that checks the end at every byte
+            const std::size_t left = from < payload_.size() ? payload_.size() - from : 0;
+            codec::copy_small(out.data() + 5, reinterpret_cast<const std::uint8_t*>(payload_.data() + from), left);
+        }
+        return out;
+    }
     std::uint8_t command_ = 0;
     std::span<const Byte> payload_{};
 };
@@ -261,12 +265,13 @@ private:
     }
     constexpr result<reassembly> append(const frame& f) noexcept {
         // one fixed-size copy at run time (a byte loop reloads size_ after every byte: the stores may alias it)
+        const std::size_t at = size_;  // kept in a register: the copy's stores may alias size_
         if (std::is_constant_evaluated() || ROBOWIRE_OPTIMIZE_SIZE) {
-            for (std::size_t i = 0; i < payload_size; ++i) buf_[size_ + i] = f.payload[i];
+            for (std::size_t i = 0; i < payload_size; ++i) buf_[at + i] = f.payload[i];
         } else {
-            std::memcpy(buf_.data() + size_, f.payload.data(), payload_size);
+            std::memcpy(buf_.data() + at, f.payload.data(), payload_size);
         }
-        size_ += payload_size;
+        size_ = at + payload_size;
         // repeats are recognised for frames of multi-frame messages only: a
         // one-frame message sent twice (e.g. the same maneuver) is two messages
         if (f.remaining != 0 || size_ > payload_size) remember(f);

@@ -152,17 +152,21 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key_chain(decode_result& d, std:
         ((key == key_of<std::variant_alternative_t<I, message>>() ? (decode_message<I>(d, in), true) : false) || ...);
     if (!known) d = fail(errc::unknown_message, 2);
 }
-// (key, alternative index) of each alternative, sorted by key.
+// DEV | CMD << 8: bytes 2 and 3 as one little-endian load (no byte swap on hosts).
+constexpr std::uint16_t wire_key(std::uint16_t key) noexcept {
+    return static_cast<std::uint16_t>(key >> 8 | (key & 0xFF) << 8);
+}
+// (wire_key, alternative index) of each alternative, sorted by wire_key.
 template <class Message>
 inline constexpr auto sorted_keys_v = [] {
     constexpr std::size_t n = std::variant_size_v<Message>;
     std::array<std::array<std::uint16_t, 2>, n> k{};
-    for (std::size_t i = 0; i < n; ++i) k[i] = {keys_v<Message>[i], static_cast<std::uint16_t>(i)};
+    for (std::size_t i = 0; i < n; ++i) k[i] = {wire_key(keys_v<Message>[i]), static_cast<std::uint16_t>(i)};
     for (std::size_t i = 1; i < n; ++i)
         for (std::size_t j = i; j > 0 && k[j - 1][0] > k[j][0]; --j) std::swap(k[j - 1], k[j]);
     return k;
 }();
-// A compare tree over sorted_keys_v[Lo, Hi).
+// A compare tree over sorted_keys_v[Lo, Hi); `key` is a wire_key.
 template <std::size_t Lo, std::size_t Hi>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_in_range(decode_result& d, std::uint16_t key,
                                                       std::span<const std::uint8_t> in) noexcept {
@@ -176,14 +180,15 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_in_range(decode_result& d, std::uin
         else decode_in_range<mid, Hi>(d, key, in);
     }
 }
-// The message whose key (DEV << 8 | CMD) is `key`, or unknown_message. At speed, a
-// compare tree: g++ turns the chain into a jump table, whose load costs more.
+// The message whose DEV and CMD are in[2] and in[3], or unknown_message. At
+// speed, a compare tree on the wire_key: g++ turns the chain into a jump
+// table, whose load costs more.
 template <std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::uint16_t key,
-                                                    std::span<const std::uint8_t> in,
+ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::span<const std::uint8_t> in,
                                                     std::index_sequence<I...> all) noexcept {
-    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) decode_by_key_chain(d, key, in, all);
-    else decode_in_range<0, sizeof...(I)>(d, key, in);
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE)
+        decode_by_key_chain(d, static_cast<std::uint16_t>(in[2] << 8 | in[3]), in, all);
+    else decode_in_range<0, sizeof...(I)>(d, static_cast<std::uint16_t>(in[2] | in[3] << 8), in);
 }
 // Checks m's fields and writes them into `out` (FF AA DEV CMD 00 00 00 00 55 77 written already).
 template <class M>
@@ -277,8 +282,7 @@ constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) no
     } else {  // one wide copy, not six bytes
         std::memcpy(&frame_in_place(d), data + 2, sizeof(osp::frame));
     }
-    decode_by_key(d, static_cast<std::uint16_t>(in[2] << 8 | in[3]), in,
-                  std::make_index_sequence<std::variant_size_v<Message>>{});
+    decode_by_key(d, in, std::make_index_sequence<std::variant_size_v<Message>>{});
     return d;
 }
 }  // namespace impl::inline ROBOWIRE_MODE_NAMESPACE

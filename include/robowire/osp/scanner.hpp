@@ -38,7 +38,13 @@ public:
             for (std::size_t k = 0; k < n; ++k) push_byte(p[k], on_frame);
             return;
         }
-        feed_chunk(p, n, on_frame);
+        if constexpr (!std::is_lvalue_reference_v<OnFrame> && std::is_trivially_copyable_v<OnFrame>) {
+            // A temporary's copy, made here: a caller's loop need not keep the callback in memory for the byte paths.
+            std::remove_cv_t<OnFrame> local = on_frame;
+            feed_chunk(p, n, local);
+        } else {
+            feed_chunk(p, n, on_frame);
+        }
     }
 
     // Pushes one byte; returns the frame it completes, if any.
