@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Prints the unit test sources linked into robowire_tests, one per line,
+# Prints the unit test sources, one per line (a program per folder:
+# robowire_tests_<folder>, and robowire_tests in meson),
 # relative to tests/: every tests/<folder>/*.cpp (main.cpp aside), except the
 # folders below, which hold programs or scripts of their own. Read by
 # tests/CMakeLists.txt and tests/meson.build, so a new test file or a new

@@ -7,7 +7,11 @@
 - the first section's version is the one in core/config.hpp (ROBOWIRE_VERSION_*),
   which CMakeLists.txt and meson.build use;
 - every tag vX.Y.Z of the repository (when it is a git checkout) has a dated
-  section.
+  section;
+- a section's entries are grouped under `### Added`, `### Changed`,
+  `### Fixed` (those present, in that order), none outside a group, and no
+  entry gives a before-to-after figure (`12.3 -> 11.0`; figures are in
+  docs/benchmarks.md and docs/footprint.md).
 """
 import os
 import re
@@ -22,7 +26,8 @@ def version_key(v):
 
 
 with open(os.path.join(ROOT, "CHANGELOG.md"), encoding="utf-8") as f:
-    headings = [line.rstrip("\n") for line in f if line.startswith("## ")]
+    lines = [line.rstrip("\n") for line in f]
+headings = [line for line in lines if line.startswith("## ")]
 with open(os.path.join(ROOT, "include", "robowire", "core", "config.hpp"), encoding="utf-8") as f:
     config = f.read()
 parts = [re.search(rf"^#define ROBOWIRE_VERSION_{p} (\d+)$", config, re.M) for p in ("MAJOR", "MINOR", "PATCH")]
@@ -53,6 +58,43 @@ dated = {v for v, d in sections if d != "unreleased"}
 for tag in tags.stdout.split() if tags.returncode == 0 else []:
     if re.fullmatch(r"v\d+\.\d+\.\d+", tag) and tag[1:] not in dated:
         failures.append(f"tag {tag} has no dated section in CHANGELOG.md")
+
+GROUPS = ["Added", "Changed", "Fixed"]
+FIGURE = re.compile(r"\d[\d.,]*\s*(%|x|[A-Za-z]+)?\s*(->|→)\s*\d")
+section, groups, group, entry = None, [], None, ""
+
+
+def check_entry(text, where):
+    if FIGURE.search(text):
+        failures.append(f"CHANGELOG.md: {where}: an entry gives a before-to-after figure "
+                        f"(put figures in docs/benchmarks.md): {text[:70]}...")
+
+
+for n, line in enumerate(lines, 1):
+    if line.startswith("## ") or line.startswith("### ") or line.startswith("- "):
+        if entry:
+            check_entry(entry, f"{section} {group}")
+        entry = ""
+    if line.startswith("## "):
+        section, groups, group = line[3:], [], None
+    elif line.startswith("### "):
+        group = line[4:].strip()
+        if section is None:
+            failures.append(f"CHANGELOG.md:{n}: '{line}' before any version section")
+        elif group not in GROUPS:
+            failures.append(f"CHANGELOG.md:{n}: '{line}': groups are ### " + ", ### ".join(GROUPS))
+        elif group in groups or any(GROUPS.index(g) > GROUPS.index(group) for g in groups):
+            failures.append(f"CHANGELOG.md:{n}: '{line}' twice or out of order (Added, Changed, Fixed)")
+        else:
+            groups.append(group)
+    elif line.startswith("- "):
+        if section is not None and group is None:
+            failures.append(f"CHANGELOG.md:{n}: an entry of {section} outside ### Added / Changed / Fixed")
+        entry = line
+    elif entry and line.strip():
+        entry += " " + line.strip()
+if entry:
+    check_entry(entry, f"{section} {group}")
 
 for line in failures:
     print(line)
