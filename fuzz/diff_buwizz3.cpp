@@ -6,7 +6,8 @@
 // or 0x53, near-valid: out-of-range fields now and then) against
 // hw_encode_* and careful_encode_* with every buffer size, 3 the same message
 // decoded back from robowire's bytes by the hand-written decoder. Same outcome,
-// error code and offset, same decoded values or encoded bytes.
+// error code and offset, same decoded values or encoded bytes. The unit
+// helpers of a decoded command against the document's formulas.
 #include <robowire/buwizz3.hpp>
 #include <robowire/fuzz.hpp>
 
@@ -102,6 +103,20 @@ std::uint8_t command_byte(const bw::command& c) {
     return robowire::encode(c).value()[0];
 }
 
+// lpf_hz: 12.5 Hz x 2^code for codes 0-3, 0.78125 Hz x 2^(code - 8) for
+// 8-11 (the document's table, rounded to 3 decimals there); power in percent:
+// raw x 100 / 127.
+void check_units(const bw::command& c) {
+    if (const auto* l = std::get_if<bw::set_accel_lpf>(&c)) {
+        const unsigned code = static_cast<unsigned>(l->setting);
+        const double hz = (code & 8 ? 0.78125 : 12.5) * (1u << (code & 3));
+        const double got = bw::lpf_hz(l->setting);
+        FUZZ_CHECK(got > hz * 0.999 && got < hz * 1.001);
+    } else if (const auto* m = std::get_if<bw::set_motor_data>(&c)) {
+        for (const auto p : m->power) FUZZ_CHECK(bw::percent_from_power(p) == p * 100.0 / 127.0);
+    }
+}
+
 void check_command(std::span<const std::uint8_t> in) {
     const auto r = bw::decode_command(in);
     hw_command h{};
@@ -113,6 +128,7 @@ void check_command(std::span<const std::uint8_t> in) {
     if (r) {
         FUZZ_CHECK(command_byte(*r) == h.kind);
         FUZZ_CHECK(same_command(*r, h));
+        check_units(*r);
     }
 }
 

@@ -5,7 +5,8 @@
 // message made from the rest (near-valid: an enumeration out of range now
 // and then), encoded by robowire and read back by the hand-written decoder
 // (the same key and values; an encode error only for a code the decoder
-// refuses too).
+// refuses too). Both: the unit helpers of every decoded or made message
+// against the document's formulas, written out here (osp/units.hpp's scales).
 #include <robowire/fuzz.hpp>
 #include <robowire/osp.hpp>
 
@@ -49,6 +50,26 @@ std::uint16_t key_of(const osp::message& m) {
     return static_cast<std::uint16_t>(f[2] << 8 | f[3]);
 }
 
+// The unit helpers, integer and double forms, in both scales, against the
+// formulas of the document and of the published firmware.
+void check_units(const osp::message& msg) {
+    using osp::scale;
+    if (const auto* v = std::get_if<osp::obp1::voltage>(&msg)) {
+        const int cv = v->centivolts;
+        FUZZ_CHECK(osp::obp1::millivolts(*v) == cv * 10 && osp::obp1::millivolts(*v, scale::published_firmware) == cv);
+        FUZZ_CHECK(osp::obp1::volts(*v) == cv / 100.0 && osp::obp1::volts(*v, scale::published_firmware) == cv / 1000.0);
+    } else if (const auto* c = std::get_if<osp::obp1::current>(&msg)) {
+        FUZZ_CHECK(osp::obp1::milliamps(*c) == c->milliamps && osp::obp1::amps(*c) == c->milliamps / 1000.0);
+    } else if (const auto* so = std::get_if<osp::obp1::soc>(&msg)) {
+        const std::uint32_t raw = so->soc_raw;
+        FUZZ_CHECK(osp::obp1::soc_basis_points(*so) == (raw * 10000u + 32767u) / 65535u);  // to nearest
+        FUZZ_CHECK(osp::obp1::soc_basis_points(*so, scale::published_firmware) == raw);
+    } else if (const auto* a = std::get_if<osp::arm1::set_angle>(&msg)) {
+        const std::int32_t doc = a->angle, pub = a->angle >= 0x8000 ? a->angle - 0x10000 : a->angle;
+        FUZZ_CHECK(osp::arm1::angle_count(a->angle) == doc && osp::arm1::angle_count(a->angle, scale::published_firmware) == pub);
+    }
+}
+
 void check_frame(std::span<const std::uint8_t> in) {
     const auto r = osp::decode(in);
     hw_msg h{};
@@ -67,6 +88,7 @@ void check_frame(std::span<const std::uint8_t> in) {
     if (r) {
         FUZZ_CHECK(key_of(*r) == (h.dev << 8 | h.cmd));
         FUZZ_CHECK(same_message(*r, h) && same_message(*r, c));
+        check_units(*r);
     }
 }
 
@@ -84,6 +106,7 @@ void check_message(robowire::fuzz::source& s) {
     FUZZ_CHECK(hw_decode_any(r->data(), r->size(), h) == hw::good);
     FUZZ_CHECK(std::memcmp(h.p, r->data() + 4, 4) == 0);
     FUZZ_CHECK(same_message(m, h));
+    check_units(m);
     // the parameters the message does not use are zero
     const auto used = std::visit(
         [](const auto& x) -> unsigned {
