@@ -14,6 +14,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "handwritten/hw.hpp"
+
 namespace bench {
 
 inline constexpr std::size_t variants = 64;  // inputs per benchmark, used round-robin
@@ -75,28 +77,6 @@ requires(std::is_class_v<Error> && !requires(const Error& e) { e.has_value(); })
     if (e) benchmark::DoNotOptimize(e);
 }
 
-// ---- the hand-written baselines' error report
-//
-// What robowire reports, as a careful hand-written codec would: an error code
-// (robowire::errc's values) and the byte offset it is about, packed into one
-// register (code | offset << 8; 0: no error).
-namespace hw {
-enum errc : std::uint8_t {
-    ok = 0, too_short = 1, too_long = 2, bad_length = 3, bad_header = 4, bad_trailer = 5, bad_command = 6,
-    bad_device = 7, unknown_message = 8, value_out_of_range = 9, invalid_enum = 10, bad_padding = 11,
-    reserved_not_zero = 12, missing_field = 13, buffer_too_small = 14, capacity_exceeded = 15, bad_sequence = 16,
-    command_changed = 17, bad_json = 18
-};
-using error = std::uint16_t;
-inline constexpr error good = 0;
-inline error fail(errc code, std::size_t at) { return static_cast<error>(code | at << 8); }
-// Length check in robowire's order: too short (at the length), then too long (at the maximum).
-inline error length(std::size_t n, std::size_t want) {
-    if (n < want) return fail(too_short, n);
-    if (n > want) return fail(too_long, want);
-    return good;
-}
-}  // namespace hw
 // Reads a baseline's error as consume(result) above reads robowire's: the
 // outcome, and the error of a failure (the outputs are read by the caller).
 inline void consume(hw::error e) {

@@ -61,6 +61,12 @@ std::vector<seed> operator+(std::vector<seed> a, const std::vector<seed>& b) {
     return a;
 }
 
+// The seeds with a first byte in front (the differential harnesses' mode).
+std::vector<seed> prefixed(std::uint8_t mode, std::vector<seed> v) {
+    for (auto& s : v) s.insert(s.begin(), mode);
+    return v;
+}
+
 // harness name (fuzz/harnesses.txt) -> its seeds
 std::vector<std::pair<std::string, std::vector<seed>>> all_seeds() {
     const auto any = [](const auto& v) { return robowire::encode(v); };
@@ -74,6 +80,10 @@ std::vector<std::pair<std::string, std::vector<seed>>> all_seeds() {
         {"roundtrip_buwizz3", each_index<bw::command>() + each_index<bw::notification>(0x80)},
         {"roundtrip_navbot", each_index<nb::message>()},
         {"roundtrip_osp", each_index<osp::message>()},
+        {"diff_buwizz3", prefixed(0, each_encoded<bw::command>(any)) + prefixed(1, each_encoded<bw::notification>(any)) +
+                             prefixed(2, {{0}, {1}, {2}}) + prefixed(3, each_index<bw::command>())},
+        {"diff_navbot", prefixed(0, each_encoded<nb::message>(any)) + prefixed(1, {{}})},
+        {"diff_osp", prefixed(0, osp_frames) + prefixed(1, each_index<osp::message>())},
     };
 }
 

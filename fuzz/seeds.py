@@ -67,6 +67,11 @@ sets = {
     "navbot_reassembler": navbot_reassembly, "osp_decode": osp_frames, "osp_scanner": osp_streams,
     "core_types": core_types, "roundtrip_buwizz3": roundtrip, "roundtrip_navbot": roundtrip, "roundtrip_osp": roundtrip,
 }
+# The differential harnesses: the same vectors behind their mode byte.
+sets["diff_buwizz3"] = ["00 " + v for v in buwizz3_commands] + ["01 " + v for v in buwizz3_notifications] + \
+    ["02 " + v for v in roundtrip] + ["03 " + v for v in roundtrip]
+sets["diff_navbot"] = ["00 " + v for v in navbot_frames] + ["01 " + v for v in roundtrip]
+sets["diff_osp"] = ["00 " + v for v in osp_frames] + ["01 " + v for v in roundtrip]
 for name, vectors in sets.items():
     d = os.path.join("fuzz", "corpus", name)
     os.makedirs(d, exist_ok=True)

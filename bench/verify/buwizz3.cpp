@@ -4,27 +4,6 @@
 #include "check.hpp"
 #include <vector>
 
-static bool same_status(const hw_status& h, const bw::status& s) {
-    if (h.flags != s.flags || h.battery != s.battery_voltage_raw || h.temperature != s.temperature_c ||
-        h.charge != s.charge_current_ma) return false;
-    for (std::size_t i = 0; i < 6; ++i) if (h.current[i] != s.motor_current_raw[i]) return false;
-    for (std::size_t i = 0; i < 3; ++i) if (h.accel[i] != s.accel_raw[i]) return false;
-    if (h.bl_command != s.bootloader_response.command || h.bl_code != s.bootloader_response.code) return false;
-    for (std::size_t i = 0; i < 3; ++i) if (h.bl_data[i] != s.bootloader_response.data[i]) return false;
-    for (std::size_t i = 0; i < 4; ++i) {
-        const auto& m = s.pu_motors[i];
-        if (h.motors[i].type != m.type || h.motors[i].velocity != m.velocity ||
-            h.motors[i].absolute != m.absolute_position || h.motors[i].position != m.position) return false;
-    }
-    if (h.has_pid != s.pid_state.has_value()) return false;
-    if (h.has_pid) {
-        const auto& p = *s.pid_state;
-        if (std::memcmp(&h.process_value, &p.process_value, 4) || std::memcmp(&h.error, &p.error, 4) ||
-            std::memcmp(&h.output, &p.output, 4) || h.integrator != p.integrator || h.motor_output != p.motor_output)
-            return false;
-    }
-    return h.ignored_trailing_bytes == s.ignored_trailing_bytes;
-}
 static void check_status(const std::uint8_t* p, std::size_t n, const std::string& ctx0, std::size_t variant) {
     const std::span<const std::uint8_t> in(p, n);
     auto r = robowire::decode<bw::status>(in);

@@ -1,0 +1,122 @@
+// The hand-written NAVBOT codecs a careful user would write, with the same
+// checks in robowire's order and the same error report (bench::hw): the
+// baselines of bench/navbot.cpp, and the oracle of fuzz/diff_navbot.cpp,
+// which shares no table with robowire. bench/verify/navbot.cpp proves that
+// they agree with robowire on the benchmarks' inputs.
+#pragma once
+
+#include <robowire/navbot.hpp>
+
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+
+#include "hw.hpp"
+
+// Internal linkage, as when these functions were part of the benchmark's own
+// translation unit (the same code, the same instruction counts).
+namespace {
+namespace nb = robowire::navbot;
+namespace hw = bench::hw;
+
+bool in(int v, int lo, int hi) { return v >= lo && v <= hi; }
+hw::error hw_encode(const nb::maneuver& m, std::uint8_t* out) {
+    if (!in(m.roll, -100, 100)) return hw::fail(hw::value_out_of_range, 5);
+    if (m.height > 100) return hw::fail(hw::value_out_of_range, 6);
+    if (!in(m.pitch, -100, 100)) return hw::fail(hw::value_out_of_range, 7);
+    if (!in(m.yaw, -100, 100)) return hw::fail(hw::value_out_of_range, 8);
+    if (static_cast<std::uint8_t>(m.switch_a) > 2) return hw::fail(hw::invalid_enum, 9);
+    if (static_cast<std::uint8_t>(m.switch_b) > 1) return hw::fail(hw::invalid_enum, 10);
+    if (static_cast<std::uint8_t>(m.switch_c) > 1) return hw::fail(hw::invalid_enum, 11);
+    if (static_cast<std::uint8_t>(m.switch_d) > 2) return hw::fail(hw::invalid_enum, 12);
+    if (!in(m.ball_x, -5, 5)) return hw::fail(hw::value_out_of_range, 13);
+    if (!in(m.ball_y, -5, 5)) return hw::fail(hw::value_out_of_range, 14);
+    out[0] = 0x55; out[1] = 0xAA; out[2] = 0x10; out[3] = 0; out[4] = 0;
+    out[5] = static_cast<std::uint8_t>(m.roll);
+    out[6] = m.height;
+    out[7] = static_cast<std::uint8_t>(m.pitch);
+    out[8] = static_cast<std::uint8_t>(m.yaw);
+    out[9] = static_cast<std::uint8_t>(m.switch_a);
+    out[10] = static_cast<std::uint8_t>(m.switch_b);
+    out[11] = static_cast<std::uint8_t>(m.switch_c);
+    out[12] = static_cast<std::uint8_t>(m.switch_d);
+    out[13] = static_cast<std::uint8_t>(m.ball_x);
+    out[14] = static_cast<std::uint8_t>(m.ball_y);
+    std::memset(out + 15, 0, 5);  // reserved
+    return hw::good;
+}
+// robowire's order: the fixed bytes that are there (header, command, and
+// remaining = 0, a bad_sequence), the length, then the fields.
+hw::error hw_decode(const std::uint8_t* p, std::size_t n, nb::maneuver& m) {
+    if (n > 0 && p[0] != 0x55) return hw::fail(hw::bad_header, 0);
+    if (n > 1 && p[1] != 0xAA) return hw::fail(hw::bad_header, 1);
+    if (n > 2 && p[2] != 0x10) return hw::fail(hw::bad_command, 2);
+    if (n > 3 && p[3] != 0) return hw::fail(hw::bad_sequence, 3);
+    if (auto e = hw::length(n, 20); e != hw::good) return e;
+    const auto s8 = [&](int i) { return static_cast<std::int8_t>(p[i]); };
+    if (!in(s8(5), -100, 100)) return hw::fail(hw::value_out_of_range, 5);
+    if (p[6] > 100) return hw::fail(hw::value_out_of_range, 6);
+    if (!in(s8(7), -100, 100)) return hw::fail(hw::value_out_of_range, 7);
+    if (!in(s8(8), -100, 100)) return hw::fail(hw::value_out_of_range, 8);
+    if (p[9] > 2) return hw::fail(hw::invalid_enum, 9);
+    if (p[10] > 1) return hw::fail(hw::invalid_enum, 10);
+    if (p[11] > 1) return hw::fail(hw::invalid_enum, 11);
+    if (p[12] > 2) return hw::fail(hw::invalid_enum, 12);
+    if (!in(s8(13), -5, 5)) return hw::fail(hw::value_out_of_range, 13);
+    if (!in(s8(14), -5, 5)) return hw::fail(hw::value_out_of_range, 14);
+    m = {s8(5), p[6], s8(7), s8(8), static_cast<nb::switch_a>(p[9]), static_cast<nb::switch_b>(p[10]),
+         static_cast<nb::switch_c>(p[11]), static_cast<nb::switch_d>(p[12]), s8(13), s8(14)};
+    return hw::good;
+}
+
+// The careful decoder: the length and the fixed bytes as one test (a word
+// compare), the ranges as one yes/no, the exact error in a cold function
+// (robowire's order), then the fields copied at once into robowire's own
+// struct, whose members are the wire's bytes 5..14 (layout checked below).
+static_assert(std::endian::native == std::endian::little && sizeof(nb::maneuver) == 10 &&
+              offsetof(nb::maneuver, switch_a) == 4 && offsetof(nb::maneuver, ball_y) == 9);
+[[gnu::cold, gnu::noinline]] hw::error careful_maneuver_error(const std::uint8_t* p, std::size_t n) {
+    nb::maneuver unused{};
+    return hw_decode(p, n, unused);
+}
+inline unsigned out8(std::uint8_t b, int lo, int hi) {  // 1: the signed byte b is outside [lo, hi]
+    return static_cast<unsigned>(static_cast<std::int8_t>(b) - lo) > static_cast<unsigned>(hi - lo);
+}
+inline unsigned above(std::uint8_t b, unsigned hi) { return b > hi; }  // 1: b > hi
+inline hw::error careful_decode(const std::uint8_t* p, std::size_t n, nb::maneuver& m) {
+    const auto head = [p] {
+        std::uint32_t h;
+        std::memcpy(&h, p, 4);
+        return h;
+    };
+    if (n != 20 || head() != 0x0010AA55u) [[unlikely]] return careful_maneuver_error(p, n);  // head() only when n == 20
+    const unsigned bad = out8(p[5], -100, 100) | above(p[6], 100) | out8(p[7], -100, 100) | out8(p[8], -100, 100) |
+                         above(p[9], 2) | above(p[10], 1) | above(p[11], 1) | above(p[12], 2) | out8(p[13], -5, 5) |
+                         out8(p[14], -5, 5);
+    if (bad) [[unlikely]] return careful_maneuver_error(p, n);
+    std::memcpy(static_cast<void*>(&m), p + 5, 10);
+    return hw::good;
+}
+
+// The careful encoder: the ranges as one yes/no, the exact error in a cold
+// function, then the header as one word, the fields as one copy of the
+// struct (its layout is the wire's bytes 5..14) and the reserved bytes.
+[[gnu::cold, gnu::noinline]] hw::error careful_encode_error(const nb::maneuver& m, std::uint8_t* out) {
+    return hw_encode(m, out);
+}
+inline unsigned outside(int v, int lo, int hi) { return static_cast<unsigned>(v - lo) > static_cast<unsigned>(hi - lo); }
+inline hw::error careful_encode(const nb::maneuver& m, std::uint8_t* out) {
+    const unsigned bad = outside(m.roll, -100, 100) | (m.height > 100) | outside(m.pitch, -100, 100) |
+                         outside(m.yaw, -100, 100) | (static_cast<unsigned>(m.switch_a) > 2) |
+                         (static_cast<unsigned>(m.switch_b) > 1) | (static_cast<unsigned>(m.switch_c) > 1) |
+                         (static_cast<unsigned>(m.switch_d) > 2) | outside(m.ball_x, -5, 5) | outside(m.ball_y, -5, 5);
+    if (bad) [[unlikely]] return careful_encode_error(m, out);
+    const std::uint64_t head = 0x0010AA55u;  // 55 AA 10 00 00, then the fields
+    std::memcpy(out, &head, 5);
+    std::memcpy(out + 5, &m, 10);
+    std::memset(out + 15, 0, 5);
+    return hw::good;
+}
+
+}  // namespace
