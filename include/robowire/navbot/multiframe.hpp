@@ -264,8 +264,8 @@ private:
         return append(f);
     }
     constexpr result<reassembly> append(const frame& f) noexcept {
-        // one fixed-size copy at run time (a byte loop reloads size_ after every byte: the stores may alias it)
-        const std::size_t at = size_;  // kept in a register: the copy's stores may alias size_
+        // one fixed-size copy at run time, from `at` kept in a register (the copy's stores may alias size_)
+        const std::size_t at = size_;
         if (std::is_constant_evaluated() || ROBOWIRE_OPTIMIZE_SIZE) {
             for (std::size_t i = 0; i < payload_size; ++i) buf_[at + i] = f.payload[i];
         } else {
