@@ -11,19 +11,24 @@ function defined in two of them must have the same instructions and
 relocations: code that depends on the settings is in their inline namespace
 (size0_loops0 ... size1_loops2, core/config.hpp), so its names differ. Exits 1
 naming each function that breaks this (two bodies under one name: the linker
-keeps either).
+keeps either). The six objects are built at once; llvm-objdump disassembles
+them where it is installed (about 15 times faster than GNU objdump on these
+objects of some 4,600 sections each), GNU objdump otherwise.
 
 Then links scanner_caller.cpp built at -Os with scanner_user.cpp built at
 -O2: osp::scanner is a type per setting, so the function taking one must
 not be found (an undefined reference naming size1_loops1::scanner)."""
+import concurrent.futures
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SETTINGS = [(s, l) for s in (0, 1) for l in (0, 1, 2)]
+OBJDUMP = shutil.which("llvm-objdump") or shutil.which("llvm-objdump-14") or "objdump"
 OWN = re.compile(r"^_Z[ZN]*K?9size_file")  # the test's own functions (they call the codecs)
 
 
@@ -32,7 +37,7 @@ def functions(cxx, include, size, loops, out):
     subprocess.run([cxx, "-std=c++20", "-O0", "-ffunction-sections", "-I", include,
                     f"-DROBOWIRE_OPTIMIZE_SIZE={size}", f"-DROBOWIRE_ARRAY_LOOPS={loops}",
                     "-c", os.path.join(HERE, "size.cpp"), "-o", obj], check=True)
-    dump = subprocess.run(["objdump", "-dr", "--no-show-raw-insn", obj], check=True,
+    dump = subprocess.run([OBJDUMP, "-dr", "--no-show-raw-insn", obj], check=True,
                           capture_output=True, text=True).stdout
     bodies, name = {}, None
     for line in dump.splitlines():
@@ -50,7 +55,9 @@ def functions(cxx, include, size, loops, out):
 def main():
     cxx, include = sys.argv[1], sys.argv[2]
     with tempfile.TemporaryDirectory() as out:
-        objs = {st: functions(cxx, include, *st, out) for st in SETTINGS}
+        with concurrent.futures.ThreadPoolExecutor(os.cpu_count() or 2) as pool:
+            jobs = {st: pool.submit(functions, cxx, include, *st, out) for st in SETTINGS}
+            objs = {st: job.result() for st, job in jobs.items()}
     names = lambda st: f"size{st[0]}_loops{st[1]}"
     first = SETTINGS[0]
     clashes, shared = set(), 0
