@@ -1,4 +1,4 @@
-// robowire/robowire.hpp - every public header: the core, the three protocols, fuzz.hpp.
+// robowire/robowire.hpp - every public header: the core, the three protocols, reflect.hpp, fuzz.hpp.
 #pragma once
 
 #include "core/config.hpp"  // first: the C++ version check
@@ -8,3 +8,4 @@
 #include "fuzz.hpp"
 #include "navbot.hpp"
 #include "osp.hpp"
+#include "reflect.hpp"
