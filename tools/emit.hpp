@@ -274,26 +274,24 @@ void text_value(buffer& o, const F& f, const E& v) {
             unsigned known = 0;
             bool any_bits = false, any_shown = false;
             std::size_t mark = o.size();
-            for (const auto& b : robowire::flag_bits_v<M>) {
-                if (b.field != f.name) continue;
+            robowire::for_each_flag_bit<M>(f.name, [&](const robowire::flag_bit& b) {
                 if (!any_bits) {
                     o += " = ";
                     mark = o.size();
                     any_bits = true;
                 }
-                const unsigned mask = ((1u << b.width) - 1u) << b.lo;
-                known |= mask;
-                const unsigned value = (raw & mask) >> b.lo;
-                if (b.width == 1 && !value) continue;
+                known |= robowire::flag_mask(b);
+                const unsigned value = robowire::flag_value(b, raw);
+                if (b.width == 1 && !value) return;
                 if (any_shown) o += " | ";
                 any_shown = true;
                 o.append(b.name);
                 if (b.width > 1) {
                     o += ' ';
-                    if (value < b.values.size() && !b.values[value].empty()) o.append(b.values[value]);
+                    if (const auto name = robowire::flag_value_name(b, value); !name.empty()) o.append(name);
                     else put_int(o, value);
                 }
-            }
+            });
             if (any_bits) {
                 for (unsigned bit = 0; bit < 8; ++bit) {
                     if (!((raw & ~known) & (1u << bit))) continue;
@@ -406,22 +404,21 @@ template <class M, class F>
 void put_json_bits(buffer& o, const F& f, unsigned raw) {
     if constexpr (robowire::has_flag_bits<M>) {
         bool any = false;
-        for (const auto& b : robowire::flag_bits_v<M>) {
-            if (b.field != f.name) continue;
+        robowire::for_each_flag_bit<M>(f.name, [&](const robowire::flag_bit& b) {
             o += any ? "," : ",\"";
             if (!any) o.append(f.name).append("_bits\":{");
             any = true;
-            const unsigned value_bits = (raw >> b.lo) & ((1u << b.width) - 1u);
+            const unsigned value_bits = robowire::flag_value(b, raw);
             o.append("\"").append(b.name).append("\":");
             if (b.width == 1) {
                 o += value_bits ? "true" : "false";
             } else {
                 o += '"';
-                if (value_bits < b.values.size() && !b.values[value_bits].empty()) o.append(b.values[value_bits]);
+                if (const auto name = robowire::flag_value_name(b, value_bits); !name.empty()) o.append(name);
                 else put_int(o, value_bits);
                 o += '"';
             }
-        }
+        });
         if (any) o += '}';
     } else {
         (void)o, (void)f, (void)raw;

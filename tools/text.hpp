@@ -5,6 +5,7 @@
 
 #include <robowire/core/fields.hpp>
 #include <robowire/navbot.hpp>
+#include <robowire/reflect.hpp>
 
 #include <cstdint>
 #include <cstdio>
@@ -25,7 +26,7 @@ inline std::string hex2(unsigned v) {
 // Every input length M's decoder accepts: "1, 13 or 17 bytes", "54 or 68-129 bytes".
 template <class M>
 std::string valid_lengths() {
-    constexpr auto& runs = robowire::detail::length_runs_v<M>;
+    constexpr auto& runs = robowire::accepted_lengths_v<M>;
     std::string s;
     for (std::size_t i = 0; i < runs.count; ++i) {
         if (i) s += i + 1 == runs.count ? " or " : ", ";
