@@ -1,4 +1,5 @@
-// robowire/fuzz.hpp - messages for fuzz harnesses, driven by the field tables.
+// robowire/ext/fuzz.hpp - messages for fuzz harnesses, driven by the field tables.
+// An optional extra: not in the umbrella robowire.hpp; it uses the public API only.
 //
 //   source s{data, size};                       // the fuzz input; zeros past its end
 //   auto m = make<buwizz3::status>(s);          // every field in its valid range: encode succeeds
@@ -11,7 +12,7 @@
 // (table_v), so a message added to a protocol is covered as it is.
 #pragma once
 
-#include "core/config.hpp"  // first: the C++ version check
+#include "../core/config.hpp"  // first: the C++ version check
 
 #include <array>
 #include <bit>
@@ -25,16 +26,17 @@
 #include <utility>
 #include <variant>
 
-#include "core/bits.hpp"
-#include "core/bytes.hpp"
-#include "core/decode.hpp"
-#include "core/detail/encode.hpp"
-#include "core/dispatch.hpp"
-#include "core/encode.hpp"
-#include "core/fields.hpp"
-#include "core/table.hpp"
-#include "core/text.hpp"
-#include "core/wire.hpp"
+#include "../core/bits.hpp"
+#include "../core/bytes.hpp"
+#include "../core/decode.hpp"
+#include "../core/dispatch.hpp"
+#include "../core/encode.hpp"
+#include "../core/endian.hpp"
+#include "../core/fields.hpp"
+#include "../core/table.hpp"
+#include "../core/text.hpp"
+#include "../core/wire.hpp"
+#include "../reflect.hpp"
 
 namespace robowire::fuzz {
 
@@ -110,8 +112,18 @@ struct out_of_range {
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
-namespace detail {
-using robowire::detail::element_t;
+namespace impl {
+// A float from its bit pattern and back, through the public little-endian helpers.
+constexpr float float_of_bits(std::uint32_t u) noexcept {
+    std::uint8_t b[4] = {};
+    store_le<std::uint32_t>(b, u);
+    return load_le<float>(b);
+}
+constexpr std::uint32_t bits_of_float(float v) noexcept {
+    std::uint8_t b[4] = {};
+    store_le<float>(b, v);
+    return load_le<std::uint32_t>(b);
+}
 
 // What the wire type of F holds: the raw values a decoder can meet.
 template <class F>
@@ -188,8 +200,7 @@ constexpr void make_element(const F& f, E& v, source& s, std::uint8_t bad) noexc
         const std::size_t n = s.integral_in_range<std::size_t>(0, E::capacity());
         for (std::size_t i = 0; i < n; ++i) (void)v.push_back(s.byte());
     } else if constexpr (std::is_same_v<E, float>) {
-        v = robowire::detail::builtin_bit_cast<float>(
-            s.integral<std::uint32_t>());  // any bit pattern: NaNs and infinities too
+        v = float_of_bits(s.integral<std::uint32_t>());  // any bit pattern: NaNs and infinities too
     } else if constexpr (std::is_same_v<E, bool>) {
         if (bad != 0) (void)s.byte();
         v = s.boolean();
@@ -263,9 +274,9 @@ constexpr T make(source& s, std::uint8_t bad) noexcept;
 // Alternative `index` of variant T, built in place (emplace of another
 // alternative than the first is not constexpr with every library).
 template <class T, std::size_t I = 0>
-constexpr T make_alternative(std::size_t index, source& s, std::uint8_t bad) noexcept {
+constexpr T make_indexed_alternative(std::size_t index, source& s, std::uint8_t bad) noexcept {
     if constexpr (I + 1 < std::variant_size_v<T>) {
-        if (index != I) return make_alternative<T, I + 1>(index, s, bad);
+        if (index != I) return make_indexed_alternative<T, I + 1>(index, s, bad);
     }
     return T{std::in_place_index<I>, make<std::variant_alternative_t<I, T>>(s, bad)};
 }
@@ -273,14 +284,14 @@ constexpr T make_alternative(std::size_t index, source& s, std::uint8_t bad) noe
 template <class T>
 constexpr T make(source& s, std::uint8_t bad) noexcept {
     if constexpr (is_variant<T>::value) {
-        return make_alternative<T>(s.integral_in_range<std::size_t>(0, std::variant_size_v<T> - 1), s, bad);
+        return make_indexed_alternative<T>(s.integral_in_range<std::size_t>(0, std::variant_size_v<T> - 1), s, bad);
     } else {
         T m{};
         make_fields(m, s, bad);
         return m;
     }
 }
-}  // namespace detail
+}  // namespace impl
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
 #endif
@@ -301,7 +312,7 @@ constexpr T make(source& s, std::uint8_t bad) noexcept {
 // its range's minimum, every enum its table's first code, and no optional block.
 template <class M>
 [[nodiscard]] constexpr M make(source& s) noexcept {
-    return detail::make<M>(s, 0);
+    return impl::make<M>(s, 0);
 }
 // The near-valid form (see out_of_range): the same draws, with one byte more
 // before each value that may put it out of range, for harnesses that test
@@ -309,14 +320,14 @@ template <class M>
 // error (value_out_of_range, invalid_enum or missing_field).
 template <class M>
 [[nodiscard]] constexpr M make(source& s, out_of_range p) noexcept {
-    return detail::make<M>(s, p.per_256);
+    return impl::make<M>(s, p.per_256);
 }
 
 // The byte-level mutator mutate() falls back on, e.g. libFuzzer's
 // LLVMFuzzerMutate: mutates data[0..size) in place, returns the new size (<= max_size).
 using byte_mutator = std::size_t (*)(std::uint8_t* data, std::size_t size, std::size_t max_size);
 
-namespace detail::inline ROBOWIRE_MODE_NAMESPACE {  // decode and encode below depend on the size settings
+namespace impl::inline ROBOWIRE_MODE_NAMESPACE {  // decode and encode below depend on the size settings
 // splitmix64: a small, good generator for the mutator's choices.
 struct rng {
     std::uint64_t state;
@@ -400,9 +411,21 @@ constexpr void store_raw(std::uint8_t* out, std::size_t size, std::size_t offset
     using E = typename F::element_type;
     using W = typename F::wire_type;
     if (offset + F::element_size > size) return;
-    if constexpr (std::is_enum_v<E>)
-        robowire::detail::store_scalar<W>(enum_code<E>(value), std::span(out, size), offset);
-    else robowire::detail::store_scalar<W>(static_cast<E>(value), std::span(out, size), offset);
+    if constexpr (W::kind == wire_kind::f32le) {
+        store_le<float>(out + offset, static_cast<float>(value));
+    } else {
+        std::uint64_t raw = 0;
+        if constexpr (std::is_enum_v<E>)
+            raw = static_cast<std::uint64_t>(static_cast<std::underlying_type_t<E>>(enum_code<E>(value)));
+        else raw = static_cast<std::uint64_t>(static_cast<E>(value));
+        if constexpr (W::kind == wire_kind::bits) {
+            constexpr auto mask = static_cast<unsigned>(low_mask(W::width) << W::lo);
+            out[offset] = static_cast<std::uint8_t>((static_cast<unsigned>(out[offset]) & ~mask) |
+                                                    ((static_cast<unsigned>(raw) << W::lo) & mask));
+        } else {
+            store_le<typename W::raw_type>(out + offset, static_cast<typename W::raw_type>(raw));
+        }
+    }
 }
 
 // Changes one element: a neighbouring value, a range end, a value just out
@@ -429,12 +452,12 @@ constexpr void mutate_element(const F& f, E& v, std::size_t offset, rng& r, raw_
                                       std::numeric_limits<float>::quiet_NaN(),
                                       std::numeric_limits<float>::max(),
                                       std::numeric_limits<float>::denorm_min()};
-        const auto u = robowire::detail::builtin_bit_cast<std::uint32_t>(v);
+        const auto u = bits_of_float(v);
         switch (r.below(4)) {
-        case 0: v = robowire::detail::builtin_bit_cast<float>(u + 1); break;  // the next float (by bit pattern)
-        case 1: v = robowire::detail::builtin_bit_cast<float>(u - 1); break;
+        case 0: v = float_of_bits(u + 1); break;  // the next float (by bit pattern)
+        case 1: v = float_of_bits(u - 1); break;
         case 2: v = specials[r.below(std::size(specials))]; break;
-        default: v = robowire::detail::builtin_bit_cast<float>(static_cast<std::uint32_t>(r.next())); break;
+        default: v = float_of_bits(static_cast<std::uint32_t>(r.next())); break;
         }
     } else if constexpr (std::is_enum_v<E>) {
         constexpr auto& codes = enum_table_v<E>;
@@ -566,7 +589,7 @@ constexpr std::size_t repair(std::uint8_t* data, std::size_t size, std::size_t m
             constexpr std::size_t i = decltype(index)::value;
             using M = std::variant_alternative_t<i, Variant>;
             if (i != best) return;
-            constexpr auto& runs = robowire::detail::length_runs_v<M>;
+            constexpr auto& runs = accepted_lengths_v<M>;
             std::size_t len = runs.run[0][0];  // the longest accepted length up to size (else the shortest)
             for (std::size_t k = 0; k < runs.count; ++k) {
                 if (size >= runs.run[k][0]) len = size < runs.run[k][1] ? size : runs.run[k][1];
@@ -587,7 +610,7 @@ constexpr std::size_t repair(std::uint8_t* data, std::size_t size, std::size_t m
     (std::make_index_sequence<n>{});
     return out;
 }
-}  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE
+}  // namespace impl::inline ROBOWIRE_MODE_NAMESPACE
 
 inline namespace ROBOWIRE_MODE_NAMESPACE {
 // A structure-aware mutator for libFuzzer's LLVMFuzzerCustomMutator:
@@ -615,25 +638,25 @@ inline namespace ROBOWIRE_MODE_NAMESPACE {
 // straight away, so that the campaign keeps byte-level variety. The result
 // differs from the input except when the fallback leaves it as it was.
 template <class Variant>
-requires detail::is_variant<Variant>::value constexpr std::size_t mutate(std::uint8_t* data, std::size_t size,
-                                                                         std::size_t max_size, unsigned int seed,
-                                                                         byte_mutator fallback = nullptr) noexcept {
-    detail::rng r{seed};
+requires impl::is_variant<Variant>::value constexpr std::size_t mutate(std::uint8_t* data, std::size_t size,
+                                                                       std::size_t max_size, unsigned int seed,
+                                                                       byte_mutator fallback = nullptr) noexcept {
+    impl::rng r{seed};
     if (fallback != nullptr && r.below(8) == 0) return fallback(data, size, max_size);
     Variant held{};
-    if (!detail::decode_any(std::span<const std::uint8_t>(data, size), held)) {
-        if (const std::size_t n = detail::repair<Variant>(data, size, max_size, r); n != 0) return n;
-        return detail::mutate_bytes(data, size, max_size, r, fallback);
+    if (!impl::decode_any(std::span<const std::uint8_t>(data, size), held)) {
+        if (const std::size_t n = impl::repair<Variant>(data, size, max_size, r); n != 0) return n;
+        return impl::mutate_bytes(data, size, max_size, r, fallback);
     }
     for (int attempt = 0; attempt < 4; ++attempt) {
         Variant m = held;
-        detail::raw_write raw{};
+        impl::raw_write raw{};
         if (r.below(8) == 0) {
-            const detail::random_bytes<detail::scratch_size_v<Variant>> bytes(r);
+            const impl::random_bytes<impl::scratch_size_v<Variant>> bytes(r);
             source s = bytes.get();
             m = make<Variant>(s);
         } else {
-            std::visit([&](auto& alt) { detail::mutate_message<Variant>(alt, r, raw); }, m);
+            std::visit([&](auto& alt) { impl::mutate_message<Variant>(alt, r, raw); }, m);
         }
         auto wire = robowire::encode(m);
         if (!wire || wire->size() > max_size) continue;
@@ -642,7 +665,7 @@ requires detail::is_variant<Variant>::value constexpr std::size_t mutate(std::ui
         for (std::size_t i = 0; i < wire->size(); ++i) data[i] = (*wire)[i];
         return wire->size();
     }
-    return detail::mutate_bytes(data, size, max_size, r, fallback);
+    return impl::mutate_bytes(data, size, max_size, r, fallback);
 }
 }  // namespace ROBOWIRE_MODE_NAMESPACE
 
