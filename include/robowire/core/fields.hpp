@@ -261,13 +261,6 @@ constexpr std::string_view describe_error(const error& e, std::span<char> buf) n
 }
 
 namespace detail {
-// The value of M's fixed byte at `offset`; -1: M has none there.
-template <class M>
-constexpr int fixed_at(std::size_t offset) noexcept {
-    for (const auto& b : table_v<M>.fixed)
-        if (b.offset == offset) return b.value;
-    return -1;
-}
 // The index of the alternative of Variant whose fixed bytes at KeyOffsets...
 // are `key`, else of the one with no fixed byte there (it takes every other
 // key, as NAVBOT's frame does); variant_size: none.
@@ -277,7 +270,7 @@ template <class... M, std::size_t... KeyOffset>
 struct alternative_by_key<std::variant<M...>, KeyOffset...> {
     template <class T>
     static constexpr std::array<int, sizeof...(KeyOffset)> keys_of() noexcept {
-        return {fixed_at<T>(KeyOffset)...};
+        return {codec::key_of<T>(KeyOffset)...};
     }
     static constexpr std::size_t find(const std::uint8_t (&key)[sizeof...(KeyOffset)]) noexcept {
         constexpr std::array<std::array<int, sizeof...(KeyOffset)>, sizeof...(M)> keys = {keys_of<M>()...};
