@@ -67,6 +67,14 @@ constexpr long long accel_sum() {
     });
     return fields == 9 ? sum : -1;
 }
+// describe_lengths<M> compared with `want` (at compile time).
+template <class M>
+struct lengths_text {
+    constexpr bool operator==(std::string_view want) const {
+        std::array<char, 64> buf{};
+        return describe_lengths<M>(buf) == want;
+    }
+};
 }  // namespace
 
 TEST_CASE("for_each_alternative and with_alternative walk a variant in order", "[core][reflect]") {
@@ -114,6 +122,10 @@ TEST_CASE("accepted_lengths_v: the lengths a decoder takes", "[core][reflect]") 
     STATIC_REQUIRE(runs.run[1][1] == 129);
     STATIC_REQUIRE(accepted_lengths_v<nb::maneuver>.count == 1);
     STATIC_REQUIRE(accepted_lengths_v<nb::maneuver>.run[0][0] == 20);  // docs/navbot.md: 20-byte frame
+    // describe_lengths: the words of describe_error's length errors (docs/buwizz3.md's example line)
+    STATIC_REQUIRE(lengths_text<bw::status>() == "54 or 68..129 bytes");
+    STATIC_REQUIRE(lengths_text<bw::charger_settings>() == "1..129 bytes");
+    STATIC_REQUIRE(lengths_text<bw::check_charger_settings>() == "1 byte");
 }
 
 TEST_CASE("value kinds, elements and physical values", "[core][reflect]") {

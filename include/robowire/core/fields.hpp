@@ -209,7 +209,31 @@ struct line_writer {
     }
     constexpr std::string_view text() const noexcept { return {buf.data(), n}; }
 };
+// The lengths M's decoder accepts: "54 or 68..129 bytes", "1 byte".
+template <class M>
+constexpr void put_lengths(line_writer& w) noexcept {
+    constexpr auto& runs = length_runs_v<M>;
+    for (std::size_t i = 0; i < runs.count; ++i) {
+        if (i > 0) w.put(i + 1 == runs.count ? " or " : ", ");
+        w.put_int(static_cast<std::int64_t>(runs.run[i][0]));
+        if (runs.run[i][1] != runs.run[i][0]) {
+            w.put("..");
+            w.put_int(static_cast<std::int64_t>(runs.run[i][1]));
+        }
+    }
+    w.put(runs.count == 1 && runs.run[0][0] == 1 && runs.run[0][1] == 1 ? " byte" : " bytes");
+}
 }  // namespace detail
+
+// Writes the input lengths M's decoder accepts ("54 or 68..129 bytes",
+// "1, 13 or 17 bytes", "1 byte") into `buf`, cut to fit; returns the text:
+// the same words describe_error gives for a length error. No heap.
+template <described M>
+constexpr std::string_view describe_lengths(std::span<char> buf) noexcept {
+    detail::line_writer w{buf};
+    detail::put_lengths<M>(w);
+    return w.text();
+}
 
 // Writes "message.field: <error> (valid min..max unit) at byte N" (or
 // without the field part when no field is at the offset) into `buf`, cut to
@@ -231,17 +255,9 @@ constexpr std::string_view describe_error(const error& e, std::span<char> buf) n
     w.put(": ");
     w.put(to_string(e.code));
     if (length || e.code == errc::bad_length) {  // the lengths M's decoder accepts, e.g. " (54 or 68..129 bytes)"
-        constexpr auto& runs = detail::length_runs_v<M>;
         w.put(" (");
-        for (std::size_t i = 0; i < runs.count; ++i) {
-            if (i > 0) w.put(i + 1 == runs.count ? " or " : ", ");
-            w.put_int(static_cast<std::int64_t>(runs.run[i][0]));
-            if (runs.run[i][1] != runs.run[i][0]) {
-                w.put("..");
-                w.put_int(static_cast<std::int64_t>(runs.run[i][1]));
-            }
-        }
-        w.put(runs.count == 1 && runs.run[0][0] == 1 && runs.run[0][1] == 1 ? " byte)" : " bytes)");
+        detail::put_lengths<M>(w);
+        w.put(")");
     }
     if (f && !f.is_enum && f.has_range && e.code == errc::value_out_of_range) {
         w.put(" (valid ");
