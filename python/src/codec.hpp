@@ -206,12 +206,12 @@ const std::vector<field_keys>& keys_of() {
             if (!f.unit.name.empty()) {
                 k.unit = interned(f.unit.name);
                 k.exact = f.unit.scale == 1.0 && f.unit.offset == 0.0;
-                if constexpr (std::is_integral_v<E> && !std::is_same_v<E, bool> && sizeof(E) == 1) {
+                if constexpr (robowire::value_kind_v<F> == robowire::value_kind::integer && sizeof(E) == 1) {
                     if (!k.exact) {
                         k.by_byte.resize(256);
                         for (unsigned b = 0; b < 256; ++b) {
                             const auto raw = static_cast<E>(static_cast<std::uint8_t>(b));
-                            k.by_byte[b] = tidy(static_cast<double>(raw) * f.unit.scale + f.unit.offset);
+                            k.by_byte[b] = tidy(robowire::physical_of(f, raw));
                         }
                     }
                 }
@@ -287,13 +287,12 @@ template <class F, class E>
 double physical_of(const field_keys& k, const F& f, E v) {
     if (k.exact) return static_cast<double>(v);
     if constexpr (sizeof(E) == 1) return k.by_byte[static_cast<std::uint8_t>(v)];
-    else return tidy(static_cast<double>(v) * f.unit.scale + f.unit.offset);
+    else return tidy(robowire::physical_of(f, static_cast<std::int64_t>(v)));
 }
 
 template <class F>
 constexpr bool has_physical() {
-    using E = element_t<F>;
-    return std::is_integral_v<E> && !std::is_same_v<E, bool> && !std::is_enum_v<E>;
+    return robowire::value_kind_v<F> == robowire::value_kind::integer;
 }
 
 template <class M>
