@@ -63,13 +63,14 @@ for h in headers:
     if os.path.dirname(h) == "robowire" and h != "robowire/robowire.hpp" and h not in direct:
         failures.append(f"robowire/robowire.hpp does not include {h}")
 
-reached = reach("robowire/robowire.hpp")
-for h in headers:
-    if h not in reached:
-        failures.append(f"robowire/robowire.hpp does not reach {h}")
-for h in extras:
-    if h in reached:
-        failures.append(f"robowire/robowire.hpp reaches the optional extra {h}")
+
+def check_holds(held, what):
+    """Every header in `held`, no extra."""
+    failures.extend(f"{what} leaves out {h}" for h in headers if h not in held)
+    failures.extend(f"{what} holds the optional extra {h}" for h in extras if h in held)
+
+
+check_holds(reach("robowire/robowire.hpp"), "robowire/robowire.hpp (what it reaches)")
 
 with tempfile.TemporaryDirectory() as tmp:
     out = os.path.join(tmp, "robowire.hpp")
@@ -80,12 +81,7 @@ with tempfile.TemporaryDirectory() as tmp:
     else:
         with open(out, encoding="utf-8") as f:
             sections = set(re.findall(r"^// ---- (robowire/\S+\.hpp)$", f.read(), re.M))
-        for h in headers:
-            if h not in sections:
-                failures.append(f"the single header (scripts/amalgamate.py) leaves out {h}")
-        for h in extras:
-            if h in sections:
-                failures.append(f"the single header (scripts/amalgamate.py) holds the optional extra {h}")
+        check_holds(sections, "the single header (scripts/amalgamate.py)")
 
 for line in failures:
     print(line)
