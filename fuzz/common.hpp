@@ -1,10 +1,10 @@
 // Shared by the fuzz harnesses: the round-trip check, and a check that aborts
 // with a message (libFuzzer reports it as a crash). Messages and values are
-// made from the input by <robowire/fuzz.hpp> (robowire::fuzz::make, fuzz::source).
+// made from the input by <robowire/ext/fuzz.hpp> (robowire::fuzz::make, fuzz::source).
 #pragma once
 
 #include <robowire/core.hpp>
-#include <robowire/fuzz.hpp>
+#include <robowire/ext/fuzz.hpp>
 
 #include <cstdint>
 #include <cstdio>

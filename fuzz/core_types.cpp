@@ -5,7 +5,7 @@
 // Input: a list of operations, one byte each (modulo their number), followed
 // by their operands.
 #include <robowire/core.hpp>
-#include <robowire/fuzz.hpp>
+#include <robowire/ext/fuzz.hpp>
 
 #include <algorithm>
 #include <array>

@@ -9,7 +9,7 @@
 // error code and offset, same decoded values or encoded bytes. The unit
 // helpers of a decoded command against the document's formulas.
 #include <robowire/buwizz3.hpp>
-#include <robowire/fuzz.hpp>
+#include <robowire/ext/fuzz.hpp>
 
 #include <array>
 #include <cstring>

@@ -5,7 +5,7 @@
 // fields; 1 a maneuver made from the rest (near-valid: fields out of range
 // now and then), encoded by robowire, hw_encode and careful_encode: the same
 // error or the same bytes.
-#include <robowire/fuzz.hpp>
+#include <robowire/ext/fuzz.hpp>
 #include <robowire/navbot.hpp>
 
 #include <array>

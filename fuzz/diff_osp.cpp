@@ -7,7 +7,7 @@
 // (the same key and values; an encode error only for a code the decoder
 // refuses too). Both: the unit helpers of every decoded or made message
 // against the document's formulas, written out here (osp/units.hpp's scales).
-#include <robowire/fuzz.hpp>
+#include <robowire/ext/fuzz.hpp>
 #include <robowire/osp.hpp>
 
 #include <cstring>

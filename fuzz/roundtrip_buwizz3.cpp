@@ -3,7 +3,7 @@
 // near-valid form (a field out of range now and then), and modulo the
 // number of messages, which one.
 #include <robowire/buwizz3.hpp>
-#include <robowire/fuzz.hpp>
+#include <robowire/ext/fuzz.hpp>
 
 #include "common.hpp"
 

@@ -1,7 +1,7 @@
 // Structure-aware: NAVBOT maneuvers and frames made from the input
 // (robowire::fuzz::make), encoded, decoded back. First byte: bit 6 the
 // near-valid form (a field out of range now and then), and modulo 2 the message.
-#include <robowire/fuzz.hpp>
+#include <robowire/ext/fuzz.hpp>
 #include <robowire/navbot.hpp>
 
 #include "common.hpp"

@@ -1,7 +1,7 @@
 // Structure-aware: OSP messages made from the input (robowire::fuzz::make),
 // encoded (by osp::encode too), decoded back. First byte: bit 6 the near-valid form (a field out
 // of range now and then), and modulo the number of messages, which one.
-#include <robowire/fuzz.hpp>
+#include <robowire/ext/fuzz.hpp>
 #include <robowire/osp.hpp>
 
 #include "common.hpp"

@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """Writes the single-header build: every header under include/robowire/ in
-dependency order, robowire's own #includes removed, standard includes kept.
+dependency order, robowire's own #includes removed, standard includes kept;
+not the optional extras (include/robowire/ext/, and fuzz.hpp, their former
+path), which robowire.hpp leaves out too.
 It starts from robowire.hpp, which includes every public header, and stops
 with an error (writing nothing) when a header under include/robowire/ is not
 reached from there: the single header and robowire.hpp hold the same code.
@@ -32,6 +34,8 @@ def visit(path):
 visit(os.path.join(root, "robowire", "robowire.hpp"))
 headers = sorted(os.path.normpath(os.path.join(d, f)) for d, _, files in os.walk(os.path.join(root, "robowire"))
                  for f in files if f.endswith(".hpp"))
+extras = os.path.join(root, "robowire", "ext")
+headers = [h for h in headers if not h.startswith(extras + os.sep) and h != os.path.join(root, "robowire", "fuzz.hpp")]
 missing = [os.path.relpath(h, root) for h in headers if h not in done]
 if missing:
     sys.exit("amalgamate.py: robowire.hpp does not include " + ", ".join(missing) +

@@ -1,9 +1,10 @@
 // Test helpers driven by a protocol's variant (its one list of messages):
-// visit every alternative, and fill a message's fields with small non-zero
-// values, so per-message loops need no hand list.
+// fill a message's fields with small non-zero values, so per-message loops
+// (robowire::for_each_alternative, reflect.hpp) need no hand list.
 #pragma once
 
 #include <robowire/core.hpp>
+#include <robowire/reflect.hpp>
 
 #include <cstddef>
 #include <type_traits>
@@ -11,15 +12,6 @@
 #include <variant>
 
 namespace test {
-
-// Calls fn(std::integral_constant<std::size_t, I>{}, M{}) for every alternative M
-// of Variant, I its index, in order.
-template <class Variant, class Fn>
-constexpr void for_each_alternative(Fn&& fn) {
-    [&]<std::size_t... I>(std::index_sequence<I...>) {
-        (fn(std::integral_constant<std::size_t, I>{}, std::variant_alternative_t<I, Variant>{}), ...);
-    }(std::make_index_sequence<std::variant_size_v<Variant>>{});
-}
 
 template <class M>
 constexpr void fill(M& m, unsigned& k);

@@ -16,18 +16,18 @@ namespace test {
 // value, and re-encodes to the same bytes.
 template <class Variant, class Encode, class Decode>
 void check_each_round_trips(Encode encode, Decode decode) {
-    for_each_alternative<Variant>([&](auto index, auto m) {
-        using M = decltype(m);
+    robowire::for_each_alternative<Variant>([&](auto t) {
+        using M = typename decltype(t)::type;
         int which = 0;
-        for (const M& x : {m, filled<M>()}) {
-            INFO("alternative " << index() << " of " << std::variant_size_v<Variant> << (which++ ? ", filled" : ", default"));
-            const Variant v{std::in_place_index<index()>, x};
+        for (const M& x : {M{}, filled<M>()}) {
+            INFO(robowire::table_v<M>.name << (which++ ? ", filled" : ", default"));
+            const Variant v{std::in_place_type<M>, x};
             const auto wire = encode(v);
             INFO("encode: error " << static_cast<int>(wire.code()) << " at offset " << (wire ? 0U : wire.error().offset));
             REQUIRE(wire);
             const auto back = decode(std::span<const std::uint8_t>(wire->data(), wire->size()));
             REQUIRE(back);
-            CHECK(back->index() == index());
+            CHECK(back->index() == v.index());
             CHECK(*back == v);
             const auto again = encode(*back);
             REQUIRE(again);

@@ -11,10 +11,10 @@ namespace bw = robowire::buwizz3;
 template <class V>
 std::optional<std::pair<std::string, std::string>> by_command(std::uint8_t cmd, std::size_t len, bool& length_fits) {
     std::optional<std::pair<std::string, std::string>> found;
-    for_each_alternative<V>([&](auto t) {
+    const std::uint8_t key[] = {cmd};
+    robowire::with_alternative<V>(robowire::alternative_by_key<V, 0>(key), [&](auto t) {
         using M = typename decltype(t)::type;
         constexpr auto& tab = robowire::table_v<M>;
-        if (found || tab.fixed[0].value != cmd) return;
         found.emplace(std::string(tab.name), valid_lengths<M>());
         length_fits = len >= tab.min_size() && len <= tab.max_input();
         // lengths inside [min, max] that an optional block makes invalid still count as this direction's

@@ -5,6 +5,7 @@
 
 #include <robowire/core/fields.hpp>
 #include <robowire/core/flag_bits.hpp>
+#include <robowire/reflect.hpp>
 #include <robowire/robowire.hpp>
 
 #include <cerrno>
@@ -44,14 +45,6 @@ inline std::string unit_text(const robowire::unit& u) {
         s += " ";
     }
     return s + std::string(u.name);
-}
-
-template <class V, class Fn>
-void for_each_alternative(Fn&& fn) {
-    [&]<std::size_t... I>(std::index_sequence<I...>) {
-        (fn(std::type_identity<std::variant_alternative_t<I, V>>{}), ...);
-    }
-    (std::make_index_sequence<std::variant_size_v<V>>{});
 }
 
 template <class F>
@@ -201,13 +194,6 @@ std::string core_line(const robowire::error& e) {
     char buf[160];
     return std::string(robowire::describe_error<M>(e, buf));
 }
-// Does `in` carry M's fixed bytes (as far as it goes)?
-template <class M>
-bool carries_fixed_bytes(std::span<const std::uint8_t> in) {
-    for (const auto& b : robowire::table_v<M>.fixed)
-        if (b.offset < in.size() && in[b.offset] != b.value) return false;
-    return !robowire::table_v<M>.fixed.empty();
-}
 // A decode error of variant V: `line` (the protocol's describe_error line for
 // it), and a hint with what the line leaves out: the value at the offset
 // ("period_ms at byte 1 is 10 (0x0A)", an enum's codes too) or the length
@@ -226,7 +212,7 @@ outcome decode_failure(std::string_view line, std::span<const std::uint8_t> in, 
     bool done = false;
     for_each_alternative<V>([&](auto t) {
         using M = typename decltype(t)::type;
-        if (done || !carries_fixed_bytes<M>(in)) return;
+        if (done || !robowire::matches_fixed_bytes<M>(in)) return;
         if (const auto loc = locate<M>(e.offset)) {
             done = true;
             o.hints.push_back(loc->path + " at byte " + std::to_string(e.offset) + " is " +
@@ -278,23 +264,20 @@ void list_fields(std::string& out, std::size_t base, std::size_t stride_note_bas
                            std::string(indent) + "  ");
         } else {
             std::string valid = valid_of(f);
-            if constexpr (robowire::has_flag_bits<M>) {
-                std::string bits;
-                for (const auto& b : robowire::flag_bits_v<M>) {
-                    if (b.field != f.name) continue;
-                    if (!bits.empty()) bits += ", ";
-                    bits += "bit " + std::to_string(b.lo);
-                    if (b.width > 1) bits += "-" + std::to_string(b.lo + b.width - 1);
-                    bits += " " + std::string(b.name);
-                    if (b.width > 1) {
-                        std::string vals;
-                        for (std::size_t v = 0; v < b.values.size() && v < (1u << b.width); ++v)
-                            vals += (vals.empty() ? "" : "/") + std::string(b.values[v]);
-                        bits += " (" + vals + ")";
-                    }
+            std::string bits;
+            robowire::for_each_flag_bit<M>(f.name, [&](const robowire::flag_bit& b) {
+                if (!bits.empty()) bits += ", ";
+                bits += "bit " + std::to_string(b.lo);
+                if (b.width > 1) bits += "-" + std::to_string(b.lo + b.width - 1);
+                bits += " " + std::string(b.name);
+                if (b.width > 1) {
+                    std::string vals;
+                    for (std::size_t v = 0; v < robowire::flag_value_count(b); ++v)
+                        vals += (vals.empty() ? "" : "/") + std::string(b.values[v]);
+                    bits += " (" + vals + ")";
                 }
-                if (!bits.empty()) valid += "; bits: " + bits;
-            }
+            });
+            if (!bits.empty()) valid += "; bits: " + bits;
             std::snprintf(line, sizeof line, "%.*s%-28s %-9s %-22s %s\n", static_cast<int>(indent.size()),
                           indent.data(), name.c_str(), at.c_str(), type.c_str(), valid.c_str());
             out += line;

@@ -61,16 +61,13 @@ void emit_fields(std::string& o);
 template <class M>
 std::string flag_bits_lua([[maybe_unused]] std::string_view field) {
     std::string o;
-    if constexpr (has_flag_bits<M>) {
-        for (const flag_bit& b : flag_bits_v<M>) {
-            if (b.field != field) continue;
-            put(o, "{", num(b.lo), ",", num(b.width), ",", lua_string(b.name), ",{");
-            for (std::size_t i = 0; i < b.values.size(); ++i)
-                if (!b.values[i].empty())
-                    put(o, "[", num(static_cast<std::int64_t>(i)), "]=", lua_string(b.values[i]), ",");
-            o += "}},";
-        }
-    }
+    for_each_flag_bit<M>(field, [&](const flag_bit& b) {
+        put(o, "{", num(b.lo), ",", num(b.width), ",", lua_string(b.name), ",{");
+        for (std::size_t i = 0; i < b.values.size(); ++i)
+            if (!b.values[i].empty())
+                put(o, "[", num(static_cast<std::int64_t>(i)), "]=", lua_string(b.values[i]), ",");
+        o += "}},";
+    });
     return o;
 }
 
@@ -124,9 +121,9 @@ void emit_message(std::string& o, std::string_view dir) {
     o += "}},\n";
 }
 
-template <class... M>
-void emit_variant(std::string& o, std::type_identity<std::variant<M...>>, std::string_view dir) {
-    (emit_message<M>(o, dir), ...);
+template <class V>
+void emit_variant(std::string& o, std::type_identity<V>, std::string_view dir) {
+    for_each_alternative<V>([&](auto t) { emit_message<typename decltype(t)::type>(o, dir); });
 }
 
 std::string uuid_string(const uuid128& u) {

@@ -192,20 +192,16 @@ inline double tidy(double v) {
     return r;
 }
 
-template <class F>
-double physical_untidy(const F& f, std::int64_t raw) {
-    return static_cast<double>(raw) * f.unit.scale + f.unit.offset;
-}
+// Rounded as the tool prints it (robowire::physical_of, reflect.hpp: raw * scale + offset).
 template <class F>
 double physical(const F& f, std::int64_t raw) {
-    return tidy(physical_untidy(f, raw));
+    return tidy(physical_of(f, raw));
 }
 
-// Leaves with a physical value: integers whose field has a unit.
+// Leaves with a physical value when their field has a unit: integers.
 template <class F>
 constexpr bool has_physical() {
-    using E = element_t<F>;
-    return std::is_integral_v<E> && !std::is_same_v<E, bool>;
+    return robowire::value_kind_v<F> == robowire::value_kind::integer;
 }
 // Long byte arrays without meaning per byte (a payload): one hex value.
 template <class F>
@@ -263,7 +259,7 @@ void text_value(buffer& o, const F& f, const E& v) {
         if (!f.unit.name.empty()) {
             if (f.unit.scale != 1.0 || f.unit.offset != 0.0) {
                 o += " (";
-                put_g_tidy(o, physical_untidy(f, i), 6);
+                put_g_tidy(o, physical_of(f, i), 6);
                 o.append(" ").append(f.unit.name).append(")");
             } else {
                 o.append(" ").append(f.unit.name);
@@ -274,26 +270,24 @@ void text_value(buffer& o, const F& f, const E& v) {
             unsigned known = 0;
             bool any_bits = false, any_shown = false;
             std::size_t mark = o.size();
-            for (const auto& b : robowire::flag_bits_v<M>) {
-                if (b.field != f.name) continue;
+            robowire::for_each_flag_bit<M>(f.name, [&](const robowire::flag_bit& b) {
                 if (!any_bits) {
                     o += " = ";
                     mark = o.size();
                     any_bits = true;
                 }
-                const unsigned mask = ((1u << b.width) - 1u) << b.lo;
-                known |= mask;
-                const unsigned value = (raw & mask) >> b.lo;
-                if (b.width == 1 && !value) continue;
+                known |= robowire::flag_mask(b);
+                const unsigned value = robowire::flag_value(b, raw);
+                if (b.width == 1 && !value) return;
                 if (any_shown) o += " | ";
                 any_shown = true;
                 o.append(b.name);
                 if (b.width > 1) {
                     o += ' ';
-                    if (value < b.values.size() && !b.values[value].empty()) o.append(b.values[value]);
+                    if (const auto name = robowire::flag_value_name(b, value); !name.empty()) o.append(name);
                     else put_int(o, value);
                 }
-            }
+            });
             if (any_bits) {
                 for (unsigned bit = 0; bit < 8; ++bit) {
                     if (!((raw & ~known) & (1u << bit))) continue;
@@ -406,22 +400,21 @@ template <class M, class F>
 void put_json_bits(buffer& o, const F& f, unsigned raw) {
     if constexpr (robowire::has_flag_bits<M>) {
         bool any = false;
-        for (const auto& b : robowire::flag_bits_v<M>) {
-            if (b.field != f.name) continue;
+        robowire::for_each_flag_bit<M>(f.name, [&](const robowire::flag_bit& b) {
             o += any ? "," : ",\"";
             if (!any) o.append(f.name).append("_bits\":{");
             any = true;
-            const unsigned value_bits = (raw >> b.lo) & ((1u << b.width) - 1u);
+            const unsigned value_bits = robowire::flag_value(b, raw);
             o.append("\"").append(b.name).append("\":");
             if (b.width == 1) {
                 o += value_bits ? "true" : "false";
             } else {
                 o += '"';
-                if (value_bits < b.values.size() && !b.values[value_bits].empty()) o.append(b.values[value_bits]);
+                if (const auto name = robowire::flag_value_name(b, value_bits); !name.empty()) o.append(name);
                 else put_int(o, value_bits);
                 o += '"';
             }
-        }
+        });
         if (any) o += '}';
     } else {
         (void)o, (void)f, (void)raw;
@@ -480,11 +473,11 @@ void write_json_object(buffer& o, const M& m) {
                     o += '[';
                     for (std::size_t i = 0; i < v.size(); ++i) {
                         if (i) o += ',';
-                        put_json_double(o, physical_untidy(f, static_cast<std::int64_t>(v[i])), 15);
+                        put_json_double(o, physical_of(f, static_cast<std::int64_t>(v[i])), 15);
                     }
                     o += ']';
                 } else {
-                    put_json_double(o, physical_untidy(f, static_cast<std::int64_t>(v)), 15);
+                    put_json_double(o, physical_of(f, static_cast<std::int64_t>(v)), 15);
                 }
                 o.append(",\"unit\":");
                 put_json_string(o, f.unit.name);
@@ -584,7 +577,7 @@ void csv_cells(buffer& o, const M* m) {
                 } else if constexpr (std::is_same_v<E, float>) {
                     if (std::isfinite(*v)) put_shortest(o, static_cast<double>(*v));
                 } else if constexpr (std::is_integral_v<E>) {
-                    if (!f.unit.name.empty()) put_shortest(o, physical_untidy(f, static_cast<std::int64_t>(*v)), 15);
+                    if (!f.unit.name.empty()) put_shortest(o, physical_of(f, static_cast<std::int64_t>(*v)), 15);
                     else put_int(o, static_cast<std::int64_t>(*v));
                 } else if constexpr (requires { v->view(); }) {
                     put_csv_cell(o, v->view());

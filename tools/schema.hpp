@@ -30,6 +30,7 @@
 #include <robowire/core/fields.hpp>
 #include <robowire/core/flag_bits.hpp>
 #include <robowire/core/table.hpp>
+#include <robowire/reflect.hpp>
 #include <robowire/robowire.hpp>
 
 #include <nlohmann/json.hpp>
@@ -89,13 +90,11 @@ json field_of(const F& f) {
     }
     if constexpr (has_flag_bits<M>) {
         json bits = json::array();
-        for (const auto& b : flag_bits_v<M>) {
-            if (b.field != f.name) continue;
+        for_each_flag_bit<M>(f.name, [&](const flag_bit& b) {
             json values = json::array();
-            if (b.width > 1)
-                for (std::size_t v = 0; v < b.values.size() && v < (1u << b.width); ++v) values.push_back(b.values[v]);
+            for (std::size_t v = 0; v < flag_value_count(b); ++v) values.push_back(b.values[v]);
             bits.push_back({{"lo", b.lo}, {"width", b.width}, {"name", b.name}, {"values", std::move(values)}});
-        }
+        });
         if (!bits.empty()) j["flag_bits"] = std::move(bits);
     }
     if constexpr (F::kind == wire_kind::text || F::kind == wire_kind::tail) j["capacity"] = E::capacity();
@@ -136,10 +135,7 @@ json message_of(std::string_view direction) {
 // Appends every alternative of variant V to `messages`.
 template <class V>
 void add_messages(json& messages, std::string_view direction = {}) {
-    [&]<std::size_t... I>(std::index_sequence<I...>) {
-        (messages.push_back(message_of<std::variant_alternative_t<I, V>>(direction)), ...);
-    }
-    (std::make_index_sequence<std::variant_size_v<V>>{});
+    for_each_alternative<V>([&](auto t) { messages.push_back(message_of<typename decltype(t)::type>(direction)); });
 }
 
 // One protocol's entry, around its messages (add_messages).

@@ -5,6 +5,7 @@
 
 #include <robowire/core/fields.hpp>
 #include <robowire/navbot.hpp>
+#include <robowire/reflect.hpp>
 
 #include <cstdint>
 #include <cstdio>
@@ -22,18 +23,12 @@ inline std::string hex2(unsigned v) {
     return b;
 }
 
-// Every input length M's decoder accepts: "1, 13 or 17 bytes", "54 or 68-129 bytes".
+// Every input length M's decoder accepts: "1, 13 or 17 bytes", "54 or 68..129 bytes"
+// (robowire::describe_lengths: the words of describe_error's length errors).
 template <class M>
 std::string valid_lengths() {
-    constexpr auto& runs = robowire::detail::length_runs_v<M>;
-    std::string s;
-    for (std::size_t i = 0; i < runs.count; ++i) {
-        if (i) s += i + 1 == runs.count ? " or " : ", ";
-        s += std::to_string(runs.run[i][0]);
-        if (runs.run[i][1] != runs.run[i][0]) s += "-" + std::to_string(runs.run[i][1]);
-    }
-    const bool one = runs.count == 1 && runs.run[0][0] == 1 && runs.run[0][1] == 1;
-    return s + (one ? " byte" : " bytes");
+    char buf[96];
+    return std::string(robowire::describe_lengths<M>(buf));
 }
 
 // NAVBOT maneuver channels with bit 7 set, also read sign-magnitude (as the

@@ -43,7 +43,7 @@ static void check_any(const std::uint8_t* p, std::size_t n, const std::string& c
     bool ok = true;
     std::visit([&](const auto& x) {
         using T = std::remove_cvref_t<decltype(x)>;
-        if (osp::impl::key_of<T>() != key) ok = false;
+        if (osp::impl::frame_key_of<T>() != key) ok = false;
         if constexpr (std::is_same_v<T, osp::generic::device_type>) ok = ok && m.b == static_cast<std::uint8_t>(x.type);
         else if constexpr (std::is_same_v<T, osp::arm1::set_angle>) ok = ok && m.b == x.joint && m.a == x.angle;
         else if constexpr (std::is_same_v<T, osp::obp1::soc>) ok = ok && m.a == x.soc_raw;

@@ -1,10 +1,11 @@
-// robowire/robowire.hpp - every public header: the core, the three protocols, fuzz.hpp.
+// robowire/robowire.hpp - the core, the three protocols and reflect.hpp (not the
+// optional extras under ext/, nor fuzz.hpp, their former path).
 #pragma once
 
 #include "core/config.hpp"  // first: the C++ version check
 
 #include "buwizz3.hpp"
 #include "core.hpp"
-#include "fuzz.hpp"
 #include "navbot.hpp"
 #include "osp.hpp"
+#include "reflect.hpp"

@@ -33,9 +33,9 @@ struct result {
 template <class V>
 bool error_of(std::span<const std::uint8_t> in, const robowire::error& e) {
     bool found = false;
-    cli::for_each_alternative<V>([&](auto t) {
+    robowire::for_each_alternative<V>([&](auto t) {
         using M = typename decltype(t)::type;
-        if (found || !cli::carries_fixed_bytes<M>(in)) return;
+        if (found || !robowire::matches_fixed_bytes<M>(in)) return;
         found = true;
         last.message = std::string(robowire::table_v<M>.name);
         const bool length = e.code == robowire::errc::too_short || e.code == robowire::errc::too_long ||
@@ -48,12 +48,8 @@ bool error_of(std::span<const std::uint8_t> in, const robowire::error& e) {
 }
 template <class V>
 bool uses(std::uint8_t cmd) {
-    bool found = false;
-    cli::for_each_alternative<V>([&](auto t) {
-        using M = typename decltype(t)::type;
-        if (robowire::table_v<M>.fixed[0].value == cmd) found = true;
-    });
-    return found;
+    const std::uint8_t key[] = {cmd};
+    return robowire::alternative_by_key<V, 0>(key) < std::variant_size_v<V>;
 }
 
 // M's fields as JSON, for encode's flattening of records (the order the
@@ -86,7 +82,7 @@ int rw_buwizz3_layout(const char* message) {
     const std::string_view name(message);
     auto find = [&](auto variant_tag) {
         using V = typename decltype(variant_tag)::type;
-        cli::for_each_alternative<V>([&](auto t) {
+        robowire::for_each_alternative<V>([&](auto t) {
             using M = typename decltype(t)::type;
             if (last.text.empty() && robowire::table_v<M>.name == name) layout<M>(last.text);
         });

@@ -28,10 +28,10 @@ struct candidate {
 template <class V>
 candidate by_command(std::uint8_t cmd, std::size_t len) {
     candidate c;
-    for_each_alternative<V>([&](auto t) {
+    const std::uint8_t key[] = {cmd};
+    robowire::with_alternative<V>(robowire::alternative_by_key<V, 0>(key), [&](auto t) {
         using M = typename decltype(t)::type;
         constexpr auto& tab = robowire::table_v<M>;
-        if (c.found || tab.fixed[0].value != cmd) return;
         c = {true, len >= tab.min_size() && len <= tab.max_input(), std::string(tab.name), valid_lengths<M>()};
     });
     return c;

@@ -10,6 +10,7 @@
 #include <robowire/core/fields.hpp>
 #include <robowire/core/flag_bits.hpp>
 #include <robowire/core/table.hpp>
+#include <robowire/reflect.hpp>
 
 #include <array>
 #include <charconv>
@@ -176,7 +177,7 @@ using element_t = typename F::element_type;
 
 // Flag bits [lo, lo+width) of a flag byte: its name and its values' names.
 struct flag_key {
-    std::uint8_t lo, width;
+    robowire::flag_bit bit;
     PyObject* name;
     std::array<PyObject*, 4> values;  // nullptr: unnamed
 };
@@ -205,25 +206,24 @@ const std::vector<field_keys>& keys_of() {
             if (!f.unit.name.empty()) {
                 k.unit = interned(f.unit.name);
                 k.exact = f.unit.scale == 1.0 && f.unit.offset == 0.0;
-                if constexpr (std::is_integral_v<E> && !std::is_same_v<E, bool> && sizeof(E) == 1) {
+                if constexpr (robowire::value_kind_v<F> == robowire::value_kind::integer && sizeof(E) == 1) {
                     if (!k.exact) {
                         k.by_byte.resize(256);
                         for (unsigned b = 0; b < 256; ++b) {
                             const auto raw = static_cast<E>(static_cast<std::uint8_t>(b));
-                            k.by_byte[b] = tidy(static_cast<double>(raw) * f.unit.scale + f.unit.offset);
+                            k.by_byte[b] = tidy(robowire::physical_of(f, raw));
                         }
                     }
                 }
             }
-            if constexpr (robowire::has_flag_bits<M>) {
-                for (const auto& b : robowire::flag_bits_v<M>) {
-                    if (b.field != f.name) continue;
-                    flag_key fk{b.lo, b.width, interned(b.name), {}};
-                    for (std::size_t i = 0; i < 4; ++i)
-                        fk.values[i] = b.width > 1 && i < (1u << b.width) && !b.values[i].empty() ? interned(b.values[i]) : nullptr;
-                    k.flags.push_back(fk);
+            robowire::for_each_flag_bit<M>(f.name, [&](const robowire::flag_bit& b) {
+                flag_key fk{b, interned(b.name), {}};
+                for (std::size_t i = 0; i < 4; ++i) {
+                    const auto name = robowire::flag_value_name(b, static_cast<unsigned>(i));
+                    fk.values[i] = name.empty() ? nullptr : interned(name);
                 }
-            }
+                k.flags.push_back(fk);
+            });
             v->push_back(std::move(k));
         });
         return v;
@@ -287,13 +287,12 @@ template <class F, class E>
 double physical_of(const field_keys& k, const F& f, E v) {
     if (k.exact) return static_cast<double>(v);
     if constexpr (sizeof(E) == 1) return k.by_byte[static_cast<std::uint8_t>(v)];
-    else return tidy(static_cast<double>(v) * f.unit.scale + f.unit.offset);
+    else return tidy(robowire::physical_of(f, static_cast<std::int64_t>(v)));
 }
 
 template <class F>
 constexpr bool has_physical() {
-    using E = element_t<F>;
-    return std::is_integral_v<E> && !std::is_same_v<E, bool> && !std::is_enum_v<E>;
+    return robowire::value_kind_v<F> == robowire::value_kind::integer;
 }
 
 template <class M>
@@ -360,8 +359,8 @@ PyObject* fields_dict(const M& m) {
                         if (!bd) throw py::error_already_set();
                         const auto raw = static_cast<unsigned>(static_cast<std::make_unsigned_t<E>>(*value));
                         for (const auto& b : bits) {
-                            const unsigned v = (raw >> b.lo) & ((1u << b.width) - 1u);
-                            if (b.width == 1) {
+                            const unsigned v = robowire::flag_value(b.bit, raw);
+                            if (b.bit.width == 1) {
                                 set_item(bd, b.name, PyBool_FromLong(v ? 1 : 0));
                             } else if (v < 4 && b.values[v]) {
                                 Py_INCREF(b.values[v]);
@@ -620,12 +619,7 @@ py::bytes encode_fields(PyObject* fields, bool ignore_derived) {
 }
 
 // ---------------------------------------------------------------- variants
-template <class V, class Fn>
-void for_each_alternative(Fn&& fn) {
-    [&]<std::size_t... I>(std::index_sequence<I...>) {
-        (fn(std::type_identity<std::variant_alternative_t<I, V>>{}), ...);
-    }(std::make_index_sequence<std::variant_size_v<V>>{});
-}
+using robowire::for_each_alternative;
 
 // Encodes the alternative of V named `name`; false when V has none.
 template <class V>

@@ -59,9 +59,10 @@ void use(std::span<const std::uint8_t> b) {
 // fn(v) for every alternative of the protocol's variant, default-constructed and filled.
 template <class Variant, class Fn>
 void each(Fn&& fn) {
-    test::for_each_alternative<Variant>([&](auto index, auto m) {
-        fn(Variant{std::in_place_index<index()>, m});
-        fn(Variant{std::in_place_index<index()>, test::filled<decltype(m)>()});
+    robowire::for_each_alternative<Variant>([&](auto t) {
+        using M = typename decltype(t)::type;
+        fn(Variant{std::in_place_type<M>, M{}});
+        fn(Variant{std::in_place_type<M>, test::filled<M>()});
     });
 }
 }  // namespace

@@ -303,7 +303,7 @@ check(rc == 1 and doc.get("type") == "error" and doc.get("error") == "unknown ke
 rc, out, _ = run("list")
 check(rc == 0 and all(m in out for m in ["set_pid_parameters", "maneuver", "request_soc", "charger_settings"]), "list")
 check(" 1 bytes" not in out and "read_accel_calibration     23       1 byte\n" in out, "singular byte")
-check("1, 13 or 17 bytes" in out and "54 or 68-129 bytes" in out and "25 bytes" in out, f"exact lengths")
+check("1, 13 or 17 bytes" in out and "54 or 68..129 bytes" in out and "25 bytes" in out, f"exact lengths")
 rc, out, _ = run("list", "buwizz3", "--fields")
 check(rc == 0 and "reference_rate_limit" in out and "@30" in out and "-127..127" in out, "list --fields")
 check("pu_motors=4 x 4 = 16 values in this order: type, velocity, absolute_position, position" in out

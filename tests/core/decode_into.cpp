@@ -90,7 +90,7 @@ template <class Variant>
 tally check_variant() {
     tally t;
     rng r;
-    test::for_each_alternative<Variant>([&](auto, auto m) { check_message<decltype(m)>(t, r); });
+    robowire::for_each_alternative<Variant>([&](auto a) { check_message<typename decltype(a)::type>(t, r); });
     return t;
 }
 

@@ -1,4 +1,4 @@
-#include <robowire/fuzz.hpp>
+#include <robowire/ext/fuzz.hpp>
 #include <robowire/buwizz3.hpp>
 #include <robowire/navbot.hpp>
 #include <robowire/osp.hpp>
@@ -39,7 +39,7 @@ struct noise {
 template <class Fn>
 void each_protocol_message(Fn&& fn) {
     const auto in = [&]<class Variant>(std::type_identity<Variant>) {
-        test::for_each_alternative<Variant>([&](auto, auto m) { fn(std::type_identity<decltype(m)>{}, table_v<decltype(m)>.name); });
+        robowire::for_each_alternative<Variant>([&](auto t) { fn(t, table_v<typename decltype(t)::type>.name); });
     };
     in(std::type_identity<bw::command>{});
     in(std::type_identity<bw::notification>{});

@@ -7,8 +7,11 @@ of the single header, so that a new header cannot be forgotten:
   included by the protocol's decode.hpp needs no second edit; core/detail/
   is reached through the core headers);
 - robowire.hpp includes every other header of include/robowire/ (the four
-  umbrellas and fuzz.hpp), and through them reaches every header there;
-- scripts/amalgamate.py writes a section for every header.
+  umbrellas and reflect.hpp), and through them reaches every header there;
+- scripts/amalgamate.py writes a section for every header;
+- the optional extras (include/robowire/ext/, and fuzz.hpp, ext/fuzz.hpp's
+  former path) are in none of them: robowire.hpp and the single header do
+  not reach them.
 
 Usage: umbrellas.py   (run from anywhere)"""
 import os
@@ -34,6 +37,8 @@ def includes(path):
 
 top = os.path.join(INCLUDE, "robowire")
 headers = sorted(rel(os.path.join(d, f)) for d, _, files in os.walk(top) for f in files if f.endswith(".hpp"))
+extras = [h for h in headers if h.startswith("robowire/ext/") or h == "robowire/fuzz.hpp"]
+headers = [h for h in headers if h not in extras]
 failures = []
 
 def reach(start):
@@ -58,10 +63,14 @@ for h in headers:
     if os.path.dirname(h) == "robowire" and h != "robowire/robowire.hpp" and h not in direct:
         failures.append(f"robowire/robowire.hpp does not include {h}")
 
-reached = reach("robowire/robowire.hpp")
-for h in headers:
-    if h not in reached:
-        failures.append(f"robowire/robowire.hpp does not reach {h}")
+
+def check_holds(held, what):
+    """Every header in `held`, no extra."""
+    failures.extend(f"{what} leaves out {h}" for h in headers if h not in held)
+    failures.extend(f"{what} holds the optional extra {h}" for h in extras if h in held)
+
+
+check_holds(reach("robowire/robowire.hpp"), "robowire/robowire.hpp (what it reaches)")
 
 with tempfile.TemporaryDirectory() as tmp:
     out = os.path.join(tmp, "robowire.hpp")
@@ -72,12 +81,11 @@ with tempfile.TemporaryDirectory() as tmp:
     else:
         with open(out, encoding="utf-8") as f:
             sections = set(re.findall(r"^// ---- (robowire/\S+\.hpp)$", f.read(), re.M))
-        for h in headers:
-            if h not in sections:
-                failures.append(f"the single header (scripts/amalgamate.py) leaves out {h}")
+        check_holds(sections, "the single header (scripts/amalgamate.py)")
 
 for line in failures:
     print(line)
 if failures:
     sys.exit(1)
-print(f"{len(headers)} headers under include/robowire/: every one in its umbrella, robowire.hpp and the single header")
+print(f"{len(headers)} headers under include/robowire/: every one in its umbrella, robowire.hpp and the single header;"
+      f" {len(extras)} optional extras in none")

@@ -2,7 +2,7 @@
 // explicit specialization declared after a header had instantiated the
 // template does not compile ("specialization after instantiation").
 #include <robowire/robowire.hpp>
-#include <robowire/fuzz.hpp>  // the fuzz helpers instantiate nothing either
+#include <robowire/ext/fuzz.hpp>  // the fuzz helpers instantiate nothing either
 
 namespace bw = robowire::buwizz3;
 namespace nb = robowire::navbot;

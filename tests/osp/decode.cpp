@@ -42,7 +42,8 @@ TEST_CASE("osp: every message round trips through the variant", "[osp]") {
     STATIC_REQUIRE(std::variant_size_v<message> >= 11);
     test::check_each_round_trips<message>([](const message& m) { return osp::encode(m); },
                                           [](std::span<const std::uint8_t> in) { return osp::decode(in); });
-    test::for_each_alternative<message>([](auto, auto m) { CHECK(osp::encode(m)->size() == frame_size); });
+    robowire::for_each_alternative<message>(
+        [](auto t) { CHECK(osp::encode(typename decltype(t)::type{})->size() == frame_size); });
 }
 
 namespace {

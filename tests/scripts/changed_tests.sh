@@ -15,7 +15,7 @@ expect "robowire_tests_osp " include/robowire/osp/messages.hpp
 expect "robowire_tests_osp " include/robowire/osp.hpp
 expect "robowire_tests_navbot robowire_tests_osp " tests/navbot/maneuver.cpp include/robowire/osp/scanner.hpp
 expect "robowire_tests_buwizz3 " tests/buwizz3/status.cpp docs/buwizz3.md
-expect "robowire_tests_fuzz " include/robowire/fuzz.hpp
+expect "robowire_tests_fuzz " include/robowire/ext/fuzz.hpp
 expect "" docs/cli.md tools/main.cpp scripts/test
 expect "$all" include/robowire/core/bits.hpp
 expect "$all" include/robowire/robowire.hpp

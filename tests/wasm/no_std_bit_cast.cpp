@@ -21,7 +21,7 @@
 
 #pragma GCC poison bit_cast
 
-#include <robowire/fuzz.hpp>
+#include <robowire/ext/fuzz.hpp>
 #include <robowire/robowire.hpp>
 
 // The builtin keeps floats' bit patterns, NaN payloads included, in constant evaluation.

@@ -46,15 +46,6 @@ template <class Variant, class F>
 inline constexpr void visit_held(Variant& v, F&& f) {
     visit_held(v, f, std::make_index_sequence<std::variant_size_v<std::remove_const_t<Variant>>>{});
 }
-
-// The value of M's fixed byte at key_offset (its command, for a dispatcher);
-// -1: M has no fixed byte there.
-template <class M>
-constexpr int key_of(std::size_t key_offset) noexcept {
-    for (const auto& b : table_v<M>.fixed)
-        if (b.offset == key_offset) return b.value;
-    return -1;
-}
 }  // namespace codec
 
 namespace codec::inline ROBOWIRE_MODE_NAMESPACE {

@@ -209,7 +209,31 @@ struct line_writer {
     }
     constexpr std::string_view text() const noexcept { return {buf.data(), n}; }
 };
+// The lengths M's decoder accepts: "54 or 68..129 bytes", "1 byte".
+template <class M>
+constexpr void put_lengths(line_writer& w) noexcept {
+    constexpr auto& runs = length_runs_v<M>;
+    for (std::size_t i = 0; i < runs.count; ++i) {
+        if (i > 0) w.put(i + 1 == runs.count ? " or " : ", ");
+        w.put_int(static_cast<std::int64_t>(runs.run[i][0]));
+        if (runs.run[i][1] != runs.run[i][0]) {
+            w.put("..");
+            w.put_int(static_cast<std::int64_t>(runs.run[i][1]));
+        }
+    }
+    w.put(runs.count == 1 && runs.run[0][0] == 1 && runs.run[0][1] == 1 ? " byte" : " bytes");
+}
 }  // namespace detail
+
+// Writes the input lengths M's decoder accepts ("54 or 68..129 bytes",
+// "1, 13 or 17 bytes", "1 byte") into `buf`, cut to fit; returns the text:
+// the same words describe_error gives for a length error. No heap.
+template <described M>
+constexpr std::string_view describe_lengths(std::span<char> buf) noexcept {
+    detail::line_writer w{buf};
+    detail::put_lengths<M>(w);
+    return w.text();
+}
 
 // Writes "message.field: <error> (valid min..max unit) at byte N" (or
 // without the field part when no field is at the offset) into `buf`, cut to
@@ -231,17 +255,9 @@ constexpr std::string_view describe_error(const error& e, std::span<char> buf) n
     w.put(": ");
     w.put(to_string(e.code));
     if (length || e.code == errc::bad_length) {  // the lengths M's decoder accepts, e.g. " (54 or 68..129 bytes)"
-        constexpr auto& runs = detail::length_runs_v<M>;
         w.put(" (");
-        for (std::size_t i = 0; i < runs.count; ++i) {
-            if (i > 0) w.put(i + 1 == runs.count ? " or " : ", ");
-            w.put_int(static_cast<std::int64_t>(runs.run[i][0]));
-            if (runs.run[i][1] != runs.run[i][0]) {
-                w.put("..");
-                w.put_int(static_cast<std::int64_t>(runs.run[i][1]));
-            }
-        }
-        w.put(runs.count == 1 && runs.run[0][0] == 1 && runs.run[0][1] == 1 ? " byte)" : " bytes)");
+        detail::put_lengths<M>(w);
+        w.put(")");
     }
     if (f && !f.is_enum && f.has_range && e.code == errc::value_out_of_range) {
         w.put(" (valid ");
@@ -261,13 +277,6 @@ constexpr std::string_view describe_error(const error& e, std::span<char> buf) n
 }
 
 namespace detail {
-// The value of M's fixed byte at `offset`; -1: M has none there.
-template <class M>
-constexpr int fixed_at(std::size_t offset) noexcept {
-    for (const auto& b : table_v<M>.fixed)
-        if (b.offset == offset) return b.value;
-    return -1;
-}
 // The index of the alternative of Variant whose fixed bytes at KeyOffsets...
 // are `key`, else of the one with no fixed byte there (it takes every other
 // key, as NAVBOT's frame does); variant_size: none.
@@ -277,7 +286,7 @@ template <class... M, std::size_t... KeyOffset>
 struct alternative_by_key<std::variant<M...>, KeyOffset...> {
     template <class T>
     static constexpr std::array<int, sizeof...(KeyOffset)> keys_of() noexcept {
-        return {fixed_at<T>(KeyOffset)...};
+        return {codec::key_of<T>(KeyOffset)...};
     }
     static constexpr std::size_t find(const std::uint8_t (&key)[sizeof...(KeyOffset)]) noexcept {
         constexpr std::array<std::array<int, sizeof...(KeyOffset)>, sizeof...(M)> keys = {keys_of<M>()...};

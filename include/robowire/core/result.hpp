@@ -413,15 +413,6 @@ template <class T>
 constexpr error codec::unchecked_error(const result<T>& r) noexcept {
     return r.stored_error();
 }
-namespace codec {
-// Makes r hold T(arg), whatever it held (also nothing, after result(unset_t)),
-// and returns the value, to be written in place.
-template <class T, class A>
-constexpr T& emplace_value(result<T>& r, const A& arg) noexcept {
-    return detail::build_value(r, arg);
-}
-}  // namespace codec
-
 // Shorthand for returning an error (offsets past 65535 become 65535).
 constexpr error fail(errc code, std::size_t offset) noexcept {
     return error{code, static_cast<std::uint16_t>(offset < 0xFFFF ? offset : 0xFFFF)};

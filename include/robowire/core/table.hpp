@@ -233,6 +233,17 @@ constexpr void for_each_field(Fn&& fn) {
     table_v<M>.fields.each(fn);
 }
 
+namespace codec {
+// The value of M's fixed byte at key_offset (its command, for a dispatcher);
+// -1: M has no fixed byte there.
+template <class M>
+constexpr int key_of(std::size_t key_offset) noexcept {
+    for (const auto& b : table_v<M>.fixed)
+        if (b.offset == key_offset) return b.value;
+    return -1;
+}
+}  // namespace codec
+
 // Bytes of M's encoding that no fixed byte and no field covers (reserved bytes).
 template <class M>
 constexpr std::array<bool, max_size_v<M>> reserved_bytes() noexcept {

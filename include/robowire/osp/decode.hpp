@@ -77,7 +77,7 @@ static_assert(sizeof(frame) == 6 && std::is_trivially_copyable_v<frame>, "osp::f
 namespace impl {
 // DEV << 8 | CMD of message M (its fixed bytes 2 and 3).
 template <class M>
-constexpr std::uint16_t key_of() noexcept {
+constexpr std::uint16_t frame_key_of() noexcept {
     return static_cast<std::uint16_t>(codec::key_of<M>(2) << 8 | codec::key_of<M>(3));
 }
 // DEV << 8 | CMD of each alternative, in flash (a local array would be copied to the stack).
@@ -85,7 +85,7 @@ template <class Message, class = std::make_index_sequence<std::variant_size_v<Me
 inline constexpr std::uint16_t keys_v[1] = {};
 template <class Message, std::size_t... I>
 inline constexpr std::uint16_t keys_v<Message, std::index_sequence<I...>>[sizeof...(I)] = {
-    key_of<std::variant_alternative_t<I, Message>>()...};
+    frame_key_of<std::variant_alternative_t<I, Message>>()...};
 // Every alternative of Message has a DEV/CMD pair of its own.
 template <class Message>
 constexpr bool keys_distinct() noexcept {
@@ -101,7 +101,8 @@ template <class M>
 constexpr bool plain_frame() noexcept {
     constexpr auto& t = table_v<M>;
     if (t.min_size() != frame_size || t.max_input() != frame_size || t.fixed.size() != 6) return false;
-    const auto expect = fixed(static_cast<std::uint8_t>(key_of<M>() >> 8), static_cast<std::uint8_t>(key_of<M>()));
+    const auto expect =
+        fixed(static_cast<std::uint8_t>(frame_key_of<M>() >> 8), static_cast<std::uint8_t>(frame_key_of<M>()));
     for (std::size_t k = 0; k < expect.size(); ++k)
         if (t.fixed[k].offset != expect[k].offset || t.fixed[k].value != expect[k].value) return false;
     return true;
@@ -149,7 +150,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key_chain(decode_result& d, std:
                                                           std::span<const std::uint8_t> in,
                                                           std::index_sequence<I...>) noexcept {
     const bool known =
-        ((key == key_of<std::variant_alternative_t<I, message>>() ? (decode_message<I>(d, in), true) : false) || ...);
+        ((key == frame_key_of<std::variant_alternative_t<I, message>>() ? (decode_message<I>(d, in), true) : false) ||
+         ...);
     if (!known) d = fail(errc::unknown_message, 2);
 }
 // DEV | CMD << 8: bytes 2 and 3 as one little-endian load (no byte swap on hosts).
@@ -220,7 +222,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr error write_answer(const M& answer, std::uint8_
     static_assert(plain_frame<M>(), "osp: a message must be one 10-byte frame with the markers, DEV and CMD fixed");
     error err{};
     if (!codec::check_fields(answer, err)) return err;
-    write_frame(out, key_of<M>());
+    write_frame(out, frame_key_of<M>());
     codec::store_fields(answer, std::span<std::uint8_t, frame_size>(out, frame_size));
     return err;
 }
