@@ -160,11 +160,48 @@ inline void put_g_tidy(buffer& o, double v, int p2) {
 }
 // printf's %.6g (text output)
 inline void put_g6(buffer& o, double v) { put_g(o, v, 6); }
+// x as std::to_chars(double) writes its shortest digits: fixed, or scientific when that is shorter.
+inline void put_to_chars_form(buffer& o, const decimal& x) {
+    if (x.neg) o += '-';
+    const int n = x.n, e = x.exp;
+    const int fixed = e >= 0 ? std::max(n, e + 1) + (n > e + 1 ? 1 : 0) : 1 - e + n;
+    const int ae = e < 0 ? -e : e;
+    const int scientific = n + (n > 1 ? 1 : 0) + 2 + (ae >= 100 ? 3 : 2);
+    if (scientific < fixed) {
+        o += x.d[0];
+        if (n > 1) o.append(".").append(x.d + 1, static_cast<std::size_t>(n - 1));
+        o += 'e';
+        o += e < 0 ? '-' : '+';
+        char b[4];
+        int k = 0, a = ae;
+        do {
+            b[k++] = static_cast<char>('0' + a % 10);
+            a /= 10;
+        } while (a);
+        if (k < 2) b[k++] = '0';
+        while (k) o += b[--k];
+    } else if (e >= 0) {
+        const auto whole = static_cast<std::size_t>(e + 1);
+        const auto un = static_cast<std::size_t>(n);
+        o.append(x.d, std::min(un, whole));
+        if (un < whole) o.append(whole - un, '0');
+        else if (un > whole) o.append(".").append(x.d + whole, un - whole);
+    } else {
+        o.append("0.").append(static_cast<std::size_t>(-e - 1), '0').append(x.d, static_cast<std::size_t>(n));
+    }
+}
+// The shortest text that reads back as v, as std::to_chars(double) writes it
+// (a decimal of few digits without Ryu: short_decimal).
+inline void put_shortest17(buffer& o, double v) {
+    decimal x;
+    if (std::isnormal(v) && short_decimal(v, x)) return put_to_chars_form(o, x);
+    char b[48];
+    o.append(b, std::to_chars(b, b + sizeof b, v).ptr);
+}
 // The shortest text that reads back as v (CSV); precision 15: rounded to 15 significant digits first.
 inline void put_shortest(buffer& o, double v, int precision = 17) {
     if (precision == 15) return put_g(o, v, 15);
-    char b[48];
-    o.append(b, std::to_chars(b, b + sizeof b, v).ptr);
+    put_shortest17(o, v);
 }
 // A JSON number as nlohmann/json writes a double, ".0" after an integer. precision 15:
 // the shortest text of v rounded to 15 significant digits (what tidy(v) writes).
@@ -173,13 +210,14 @@ inline void put_json_double(buffer& o, double v, int precision = 17) {
         o += "null";
         return;
     }
-    const std::size_t start = o.size();
-    if (precision == 15) {
-        put_g(o, v, 15);
-    } else {
-        char b[48];
-        o.append(b, std::to_chars(b, b + sizeof b, v).ptr);
+    if (precision == 15 && std::fabs(v) < 1e15 && v == std::trunc(v) && !(v == 0.0 && std::signbit(v))) {
+        put_int(o, static_cast<std::int64_t>(v));  // a whole number (most physical values of scale 1)
+        o += ".0";
+        return;
     }
+    const std::size_t start = o.size();
+    if (precision == 15) put_g(o, v, 15);
+    else put_shortest17(o, v);
     const std::string_view w = o.view().substr(start);
     if (w.find_first_of(".e") == std::string_view::npos) o += ".0";
 }
@@ -316,12 +354,20 @@ void text_value(buffer& o, const F& f, const E& v) {
 struct path_buf {
     char s[200];
     std::size_t n = 0;
+    bool varies = false;  // rows that depend on the message's values (optional blocks, payload text) were seen
     void push(std::string_view x) {
         const std::size_t k = std::min(x.size(), sizeof s - n);
         std::copy_n(x.data(), k, s + n);
         n += k;
     }
     void push_index(std::size_t i) {
+        if (i < 10 && n + 3 <= sizeof s) {
+            s[n] = '[';
+            s[n + 1] = static_cast<char>('0' + i);
+            s[n + 2] = ']';
+            n += 3;
+            return;
+        }
         char b[24];
         b[0] = '[';
         char* e = std::to_chars(b + 1, b + sizeof b - 1, i).ptr;
@@ -361,12 +407,14 @@ void for_each_row(const M& m, path_buf& p, Row& row) {
         };
         const auto& member = m.*(f.member);
         if constexpr (F::is_optional) {
+            p.varies = true;
             if (member) value(*member);
             else row(p.view(), [](buffer& o) { o += "(absent)"; });
         } else {
             value(member);
         }
         thread_local std::string text;
+        if constexpr (std::is_same_v<M, robowire::navbot::frame>) p.varies = true;
         if (payload_text(m, f.name, text)) {
             const std::size_t at = p.n;
             p.push(" (text)");
@@ -381,11 +429,14 @@ void for_each_row(const M& m, path_buf& p, Row& row) {
 template <class M>
 void write_text(buffer& o, std::string_view protocol, const M& m, const std::vector<std::string>& notes) {
     o.append(protocol).append(" ").append(robowire::table_v<M>.name).append("\n");
-    std::size_t w = 0;
-    {
+    // the width of the paths: the same for every message of type M without optional blocks or payload text
+    static std::size_t fixed_width = 0;  // 0: not known
+    std::size_t w = fixed_width;
+    if (!w) {
         path_buf p;
         auto width = [&](std::string_view path, const auto&) { w = std::max(w, path.size()); };
         for_each_row(m, p, width);
+        if (!p.varies) fixed_width = w;
     }
     path_buf p;
     auto write = [&](std::string_view path, const auto& value) {
