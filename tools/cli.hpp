@@ -81,7 +81,7 @@ public:
         return *this;
     }
     buffer& append(const char* b, const char* e) { return append(b, static_cast<std::size_t>(e - b)); }
-    buffer& append(std::string_view s) { return append(s.data(), s.size()); }
+    [[gnu::always_inline]] buffer& append(std::string_view s) { return append(s.data(), s.size()); }
     buffer& append(std::size_t n, char c) {
         if (n > cap_ - size_) reserve(size_ + n);
         std::memset(data_ + size_, c, n);
@@ -93,7 +93,7 @@ public:
         return append(s, N - 1);
     }
     buffer& operator+=(std::string_view s) { return append(s); }
-    buffer& operator+=(char c) {
+    [[gnu::always_inline]] buffer& operator+=(char c) {
         if (size_ == cap_) reserve(size_ + 1);
         data_[size_++] = c;
         return *this;

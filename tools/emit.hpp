@@ -24,6 +24,12 @@ using element_t = typename F::element_type;
 
 // ---------------------------------------------------------------- numbers
 inline void put_int(buffer& o, std::int64_t v) {
+    if (v >= 0 && v < 100) {  // most values: one or two digits without std::to_chars
+        if (v < 10) return void(o += static_cast<char>('0' + v));
+        const char b[2] = {static_cast<char>('0' + v / 10), static_cast<char>('0' + v % 10)};
+        o.append(b, 2);
+        return;
+    }
     char b[24];
     o.append(b, std::to_chars(b, b + sizeof b, v).ptr);
 }
@@ -219,7 +225,9 @@ inline void put_json_double(buffer& o, double v, int precision = 17) {
     if (precision == 15) put_g(o, v, 15);
     else put_shortest17(o, v);
     const std::string_view w = o.view().substr(start);
-    if (w.find_first_of(".e") == std::string_view::npos) o += ".0";
+    for (const char c : w)
+        if (c == '.' || c == 'e') return;
+    o += ".0";
 }
 // Rounded to 15 significant digits (13.000000000000002 -> 13): physical values.
 inline double tidy(double v) {
@@ -429,22 +437,47 @@ void for_each_row(const M& m, path_buf& p, Row& row) {
 template <class M>
 void write_text(buffer& o, std::string_view protocol, const M& m, const std::vector<std::string>& notes) {
     o.append(protocol).append(" ").append(robowire::table_v<M>.name).append("\n");
-    // the width of the paths: the same for every message of type M without optional blocks or payload text
-    static std::size_t fixed_width = 0;  // 0: not known
-    std::size_t w = fixed_width;
-    if (!w) {
+    // The rows' heads ("  path" and the padding to the widest path): rendered
+    // once for a message type without optional blocks or payload text (the
+    // same rows for every message), otherwise for each message.
+    struct heads {
+        bool fixed = false;
+        std::string text;             // the heads one after the other
+        std::vector<std::size_t> at;  // where each ends in text
+    };
+    thread_local heads fixed;
+    if (fixed.fixed) {
+        std::size_t i = 0, from = 0;
+        auto write = [&](std::string_view, const auto& value) {
+            o.append(fixed.text.data() + from, fixed.at[i] - from);
+            from = fixed.at[i++];
+            value(o);
+            o += '\n';
+        };
+        path_buf p;
+        for_each_row(m, p, write);
+    } else {
+        std::size_t w = 0;
         path_buf p;
         auto width = [&](std::string_view path, const auto&) { w = std::max(w, path.size()); };
         for_each_row(m, p, width);
-        if (!p.varies) fixed_width = w;
+        if (!p.varies) {
+            path_buf q;
+            auto head = [&](std::string_view path, const auto&) {
+                fixed.text.append("  ").append(path).append(w - path.size() + 2, ' ');
+                fixed.at.push_back(fixed.text.size());
+            };
+            for_each_row(m, q, head);
+            fixed.fixed = true;
+        }
+        path_buf r;
+        auto write = [&](std::string_view path, const auto& value) {
+            o.append("  ").append(path).append(w - path.size() + 2, ' ');
+            value(o);
+            o += '\n';
+        };
+        for_each_row(m, r, write);
     }
-    path_buf p;
-    auto write = [&](std::string_view path, const auto& value) {
-        o.append("  ").append(path).append(w - path.size() + 2, ' ');
-        value(o);
-        o += '\n';
-    };
-    for_each_row(m, p, write);
     for (const auto& n : notes) o.append("  note: ").append(n).append("\n");
 }
 

@@ -104,19 +104,21 @@ bool parse_hex_into(std::string_view text, byte_vector& out, std::string& error)
 }
 
 bool parse_dashed_hex(std::string_view text, byte_vector& out, std::size_t& used) {
-    out.clear();
     const std::size_t n = text.size();
+    out.resize(n / 3 + 1);  // at most that many bytes; written through a pointer, then cut to size
+    std::uint8_t* d = out.data();
     std::size_t k = 0;
     for (;;) {
         if (k + 1 >= n) return false;
         const unsigned hi = classes[static_cast<unsigned char>(text[k])];
         const unsigned lo = classes[static_cast<unsigned char>(text[k + 1])];
         if ((hi | lo) >= 16) return false;
-        out.push_back(static_cast<std::uint8_t>(hi << 4 | lo));
+        *d++ = static_cast<std::uint8_t>(hi << 4 | lo);
         k += 2;
         if (k == n || text[k] != '-') break;
         ++k;
     }
+    out.resize(static_cast<std::size_t>(d - out.data()));
     // what follows the value: the end, or a character that cannot continue it
     if (k < n && (classes[static_cast<unsigned char>(text[k])] < 16 || text[k] == ':' || text[k] == ' ')) return false;
     used = k;
