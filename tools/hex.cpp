@@ -105,8 +105,13 @@ bool parse_hex_into(std::string_view text, byte_vector& out, std::string& error)
 
 bool parse_dashed_hex(std::string_view text, byte_vector& out, std::size_t& used) {
     const std::size_t n = text.size();
-    out.resize(n / 3 + 1);  // at most that many bytes; written through a pointer, then cut to size
-    std::uint8_t* d = out.data();
+    // at most n / 3 + 1 bytes, written through a pointer: into a local array
+    // for a value of up to 512 bytes (no zero fill of `out` first), else into `out`
+    std::uint8_t local[512];
+    const bool small = n / 3 + 1 <= sizeof local;
+    if (!small) out.resize(n / 3 + 1);
+    std::uint8_t* const start = small ? local : out.data();
+    std::uint8_t* d = start;
     std::size_t k = 0;
     for (;;) {
         if (k + 1 >= n) return false;
@@ -118,7 +123,8 @@ bool parse_dashed_hex(std::string_view text, byte_vector& out, std::size_t& used
         if (k == n || text[k] != '-') break;
         ++k;
     }
-    out.resize(static_cast<std::size_t>(d - out.data()));
+    if (small) out.assign(start, d);
+    else out.resize(static_cast<std::size_t>(d - start));
     // what follows the value: the end, or a character that cannot continue it
     if (k < n && (classes[static_cast<unsigned char>(text[k])] < 16 || text[k] == ':' || text[k] == ' ')) return false;
     used = k;
