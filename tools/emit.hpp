@@ -362,7 +362,7 @@ void text_value(buffer& o, const F& f, const E& v) {
 struct path_buf {
     char s[200];
     std::size_t n = 0;
-    bool varies = false;  // rows that depend on the message's values (optional blocks, payload text) were seen
+    bool varies = false;  // a row that depends on the message's values (payload text) was seen
     void push(std::string_view x) {
         const std::size_t k = std::min(x.size(), sizeof s - n);
         std::copy_n(x.data(), k, s + n);
@@ -415,7 +415,6 @@ void for_each_row(const M& m, path_buf& p, Row& row) {
         };
         const auto& member = m.*(f.member);
         if constexpr (F::is_optional) {
-            p.varies = true;
             if (member) value(*member);
             else row(p.view(), [](buffer& o) { o += "(absent)"; });
         } else {
@@ -433,24 +432,59 @@ void for_each_row(const M& m, path_buf& p, Row& row) {
     });
 }
 
+// One bit per optional block of m, in the order of the rows, set when present (bit: the next bit).
+template <class M>
+void presence(const M& m, std::uint64_t& present, int& bit) {
+    robowire::for_each_field<M>([&](const auto& f) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        auto inner = [&](const auto& v) {
+            if constexpr (F::kind == wire_kind::record) {
+                if constexpr (F::is_array) {
+                    for (std::size_t i = 0; i < v.size(); ++i) presence(v[i], present, bit);
+                } else {
+                    presence(v, present, bit);
+                }
+            } else {
+                (void)v;
+            }
+        };
+        const auto& member = m.*(f.member);
+        if constexpr (F::is_optional) {
+            if (member) {
+                if (bit < 64) present |= std::uint64_t{1} << bit;
+                inner(*member);
+            }
+            ++bit;
+        } else {
+            inner(member);
+        }
+    });
+}
+
 // "protocol message" then one row per field, then the notes.
 template <class M>
 void write_text(buffer& o, std::string_view protocol, const M& m, const std::vector<std::string>& notes) {
     o.append(protocol).append(" ").append(robowire::table_v<M>.name).append("\n");
-    // The rows' heads ("  path" and the padding to the widest path): rendered
-    // once for a message type without optional blocks or payload text (the
-    // same rows for every message), otherwise for each message.
+    // The rows' heads ("  path" and the padding to the widest path) depend only
+    // on which optional blocks are present: rendered once for each combination
+    // (up to 64 optional blocks; a NAVBOT frame's payload text: each message).
     struct heads {
-        bool fixed = false;
+        std::uint64_t present = 0;
         std::string text;             // the heads one after the other
         std::vector<std::size_t> at;  // where each ends in text
     };
-    thread_local heads fixed;
-    if (fixed.fixed) {
+    thread_local std::vector<heads> known;
+    std::uint64_t present = 0;
+    int blocks = 0;
+    presence(m, present, blocks);
+    const heads* h = nullptr;
+    for (const auto& k : known)
+        if (blocks <= 64 && k.present == present) h = &k;
+    if (h) {
         std::size_t i = 0, from = 0;
         auto write = [&](std::string_view, const auto& value) {
-            o.append(fixed.text.data() + from, fixed.at[i] - from);
-            from = fixed.at[i++];
+            o.append(h->text.data() + from, h->at[i] - from);
+            from = h->at[i++];
             value(o);
             o += '\n';
         };
@@ -461,14 +495,16 @@ void write_text(buffer& o, std::string_view protocol, const M& m, const std::vec
         path_buf p;
         auto width = [&](std::string_view path, const auto&) { w = std::max(w, path.size()); };
         for_each_row(m, p, width);
-        if (!p.varies) {
+        if (!p.varies && blocks <= 64 && known.size() < 64) {
+            heads k;
+            k.present = present;
             path_buf q;
             auto head = [&](std::string_view path, const auto&) {
-                fixed.text.append("  ").append(path).append(w - path.size() + 2, ' ');
-                fixed.at.push_back(fixed.text.size());
+                k.text.append("  ").append(path).append(w - path.size() + 2, ' ');
+                k.at.push_back(k.text.size());
             };
             for_each_row(m, q, head);
-            fixed.fixed = true;
+            known.push_back(std::move(k));
         }
         path_buf r;
         auto write = [&](std::string_view path, const auto& value) {

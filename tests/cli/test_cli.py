@@ -3,7 +3,7 @@
 Golden vectors are the unit tests' (worked out by hand from the documents);
 physical values are worked out by hand from the documents' units.
 Prints 'N passed, M failed' and exits 1 on any failure."""
-import json, os, shutil, subprocess, sys, tempfile, time
+import json, os, re, shutil, subprocess, sys, tempfile, time
 
 TOOL = sys.argv[1]
 passed = failed = 0
@@ -484,6 +484,17 @@ rc, out, err = run("decode", "30", "7F")
 check(rc == 2 and "30" in err, f"decode without protocol: {rc} {err!r}")
 rc, out, err = run("decode", "osp", "--file", "-", stdin=b"# nothing\n\n")
 check(rc == 1 and "no frame in stdin: 2 lines" in err, f"no frame: {rc} {err!r}")
+
+# text rows of one message type with and without its optional block (a 68-byte status, the
+# 54-byte form without pid_state, the 68-byte form again): each record as decode prints the frame alone
+forms = [status_dashes, status_dashes[:54 * 3 - 1], status_dashes]
+log = "nRF Connect, 2026-03-14\n" + "".join(f"I 10:12:0{i}.000 Notification received from {APP}, value: (0x) {v}\n"
+                                            for i, v in enumerate(forms))
+rc, out, err = run("decode", "buwizz3", "--file", "-", stdin=log.encode())
+records = re.split(r"^2026-03-14T10:12:0\d\.000 line \d \(device to host\): ", out, flags=re.M)[1:]
+alone = [run("decode", "buwizz3", v.replace("-", ""))[1] for v in forms]
+check(rc == 0 and len(records) == 3 and records == alone and "  pid_state  " in alone[1]
+      and "pid_state.output" in alone[0], f"text rows with and without an optional block: {out!r}")
 
 # scan buwizz3: the same, errors in line on stdout, counters last
 rc, out, err = run("scan", "buwizz3", "-", stdin=android_log.encode())
