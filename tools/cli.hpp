@@ -43,6 +43,10 @@ inline constexpr int exit_ok = 0, exit_bad_input = 1, exit_usage = 2;
 std::optional<byte_vector> parse_hex_text(std::string_view text, std::string& error);
 // The same into `out` (its capacity kept): false and `error` on failure.
 bool parse_hex_into(std::string_view text, byte_vector& out, std::string& error);
+// nRF Connect's "01-6D-50" at the start of `text`, ended by the end of text or
+// a character that is neither a hex digit, '-', ':' nor a space: its bytes into
+// `out` and their length in `used`; false for anything else (then nothing is decided).
+bool parse_dashed_hex(std::string_view text, byte_vector& out, std::size_t& used);
 // Does `data` read as hex text (only hex digits, separators, "0x" and "(0x)")?
 bool looks_like_hex_text(std::span<const std::uint8_t> data);
 // "01 6D 50"
@@ -77,7 +81,7 @@ public:
         return *this;
     }
     buffer& append(const char* b, const char* e) { return append(b, static_cast<std::size_t>(e - b)); }
-    buffer& append(std::string_view s) { return append(s.data(), s.size()); }
+    [[gnu::always_inline]] buffer& append(std::string_view s) { return append(s.data(), s.size()); }
     buffer& append(std::size_t n, char c) {
         if (n > cap_ - size_) reserve(size_ + n);
         std::memset(data_ + size_, c, n);
@@ -89,7 +93,7 @@ public:
         return append(s, N - 1);
     }
     buffer& operator+=(std::string_view s) { return append(s); }
-    buffer& operator+=(char c) {
+    [[gnu::always_inline]] buffer& operator+=(char c) {
         if (size_ == cap_) reserve(size_ + 1);
         data_[size_++] = c;
         return *this;

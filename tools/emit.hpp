@@ -24,6 +24,12 @@ using element_t = typename F::element_type;
 
 // ---------------------------------------------------------------- numbers
 inline void put_int(buffer& o, std::int64_t v) {
+    if (v >= 0 && v < 100) {  // most values: one or two digits without std::to_chars
+        if (v < 10) return void(o += static_cast<char>('0' + v));
+        const char b[2] = {static_cast<char>('0' + v / 10), static_cast<char>('0' + v % 10)};
+        o.append(b, 2);
+        return;
+    }
     char b[24];
     o.append(b, std::to_chars(b, b + sizeof b, v).ptr);
 }
@@ -160,11 +166,48 @@ inline void put_g_tidy(buffer& o, double v, int p2) {
 }
 // printf's %.6g (text output)
 inline void put_g6(buffer& o, double v) { put_g(o, v, 6); }
+// x as std::to_chars(double) writes its shortest digits: fixed, or scientific when that is shorter.
+inline void put_to_chars_form(buffer& o, const decimal& x) {
+    if (x.neg) o += '-';
+    const int n = x.n, e = x.exp;
+    const int fixed = e >= 0 ? std::max(n, e + 1) + (n > e + 1 ? 1 : 0) : 1 - e + n;
+    const int ae = e < 0 ? -e : e;
+    const int scientific = n + (n > 1 ? 1 : 0) + 2 + (ae >= 100 ? 3 : 2);
+    if (scientific < fixed) {
+        o += x.d[0];
+        if (n > 1) o.append(".").append(x.d + 1, static_cast<std::size_t>(n - 1));
+        o += 'e';
+        o += e < 0 ? '-' : '+';
+        char b[4];
+        int k = 0, a = ae;
+        do {
+            b[k++] = static_cast<char>('0' + a % 10);
+            a /= 10;
+        } while (a);
+        if (k < 2) b[k++] = '0';
+        while (k) o += b[--k];
+    } else if (e >= 0) {
+        const auto whole = static_cast<std::size_t>(e + 1);
+        const auto un = static_cast<std::size_t>(n);
+        o.append(x.d, std::min(un, whole));
+        if (un < whole) o.append(whole - un, '0');
+        else if (un > whole) o.append(".").append(x.d + whole, un - whole);
+    } else {
+        o.append("0.").append(static_cast<std::size_t>(-e - 1), '0').append(x.d, static_cast<std::size_t>(n));
+    }
+}
+// The shortest text that reads back as v, as std::to_chars(double) writes it
+// (a decimal of few digits without Ryu: short_decimal).
+inline void put_shortest17(buffer& o, double v) {
+    decimal x;
+    if (std::isnormal(v) && short_decimal(v, x)) return put_to_chars_form(o, x);
+    char b[48];
+    o.append(b, std::to_chars(b, b + sizeof b, v).ptr);
+}
 // The shortest text that reads back as v (CSV); precision 15: rounded to 15 significant digits first.
 inline void put_shortest(buffer& o, double v, int precision = 17) {
     if (precision == 15) return put_g(o, v, 15);
-    char b[48];
-    o.append(b, std::to_chars(b, b + sizeof b, v).ptr);
+    put_shortest17(o, v);
 }
 // A JSON number as nlohmann/json writes a double, ".0" after an integer. precision 15:
 // the shortest text of v rounded to 15 significant digits (what tidy(v) writes).
@@ -173,15 +216,18 @@ inline void put_json_double(buffer& o, double v, int precision = 17) {
         o += "null";
         return;
     }
-    const std::size_t start = o.size();
-    if (precision == 15) {
-        put_g(o, v, 15);
-    } else {
-        char b[48];
-        o.append(b, std::to_chars(b, b + sizeof b, v).ptr);
+    if (precision == 15 && std::fabs(v) < 1e15 && v == std::trunc(v) && !(v == 0.0 && std::signbit(v))) {
+        put_int(o, static_cast<std::int64_t>(v));  // a whole number (most physical values of scale 1)
+        o += ".0";
+        return;
     }
+    const std::size_t start = o.size();
+    if (precision == 15) put_g(o, v, 15);
+    else put_shortest17(o, v);
     const std::string_view w = o.view().substr(start);
-    if (w.find_first_of(".e") == std::string_view::npos) o += ".0";
+    for (const char c : w)
+        if (c == '.' || c == 'e') return;
+    o += ".0";
 }
 // Rounded to 15 significant digits (13.000000000000002 -> 13): physical values.
 inline double tidy(double v) {
@@ -310,12 +356,20 @@ void text_value(buffer& o, const F& f, const E& v) {
 struct path_buf {
     char s[200];
     std::size_t n = 0;
+    bool varies = false;  // a row that depends on the message's values (payload text) was seen
     void push(std::string_view x) {
         const std::size_t k = std::min(x.size(), sizeof s - n);
         std::copy_n(x.data(), k, s + n);
         n += k;
     }
     void push_index(std::size_t i) {
+        if (i < 10 && n + 3 <= sizeof s) {
+            s[n] = '[';
+            s[n + 1] = static_cast<char>('0' + i);
+            s[n + 2] = ']';
+            n += 3;
+            return;
+        }
         char b[24];
         b[0] = '[';
         char* e = std::to_chars(b + 1, b + sizeof b - 1, i).ptr;
@@ -361,6 +415,7 @@ void for_each_row(const M& m, path_buf& p, Row& row) {
             value(member);
         }
         thread_local std::string text;
+        if constexpr (std::is_same_v<M, robowire::navbot::frame>) p.varies = true;
         if (payload_text(m, f.name, text)) {
             const std::size_t at = p.n;
             p.push(" (text)");
@@ -371,23 +426,88 @@ void for_each_row(const M& m, path_buf& p, Row& row) {
     });
 }
 
+// One bit per optional block of m, in the order of the rows, set when present (bit: the next bit).
+template <class M>
+void presence(const M& m, std::uint64_t& present, int& bit) {
+    robowire::for_each_field<M>([&](const auto& f) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        auto inner = [&](const auto& v) {
+            if constexpr (F::kind == wire_kind::record) {
+                if constexpr (F::is_array) {
+                    for (std::size_t i = 0; i < v.size(); ++i) presence(v[i], present, bit);
+                } else {
+                    presence(v, present, bit);
+                }
+            } else {
+                (void)v;
+            }
+        };
+        const auto& member = m.*(f.member);
+        if constexpr (F::is_optional) {
+            if (member) {
+                if (bit < 64) present |= std::uint64_t{1} << bit;
+                inner(*member);
+            }
+            ++bit;
+        } else {
+            inner(member);
+        }
+    });
+}
+
 // "protocol message" then one row per field, then the notes.
 template <class M>
 void write_text(buffer& o, std::string_view protocol, const M& m, const std::vector<std::string>& notes) {
     o.append(protocol).append(" ").append(robowire::table_v<M>.name).append("\n");
-    std::size_t w = 0;
-    {
+    // The rows' heads ("  path" and the padding to the widest path) depend only
+    // on which optional blocks are present: rendered once for each combination
+    // (up to 64 optional blocks; a NAVBOT frame's payload text: each message).
+    struct heads {
+        std::uint64_t present = 0;
+        std::string text;             // the heads one after the other
+        std::vector<std::size_t> at;  // where each ends in text
+    };
+    thread_local std::vector<heads> known;
+    std::uint64_t present = 0;
+    int blocks = 0;
+    presence(m, present, blocks);
+    const heads* h = nullptr;
+    for (const auto& k : known)
+        if (blocks <= 64 && k.present == present) h = &k;
+    if (h) {
+        std::size_t i = 0, from = 0;
+        auto write = [&](std::string_view, const auto& value) {
+            o.append(h->text.data() + from, h->at[i] - from);
+            from = h->at[i++];
+            value(o);
+            o += '\n';
+        };
+        path_buf p;
+        for_each_row(m, p, write);
+    } else {
+        std::size_t w = 0;
         path_buf p;
         auto width = [&](std::string_view path, const auto&) { w = std::max(w, path.size()); };
         for_each_row(m, p, width);
+        if (!p.varies && blocks <= 64 && known.size() < 64) {
+            heads k;
+            k.present = present;
+            path_buf q;
+            auto head = [&](std::string_view path, const auto&) {
+                k.text.append("  ").append(path).append(w - path.size() + 2, ' ');
+                k.at.push_back(k.text.size());
+            };
+            for_each_row(m, q, head);
+            known.push_back(std::move(k));
+        }
+        path_buf r;
+        auto write = [&](std::string_view path, const auto& value) {
+            o.append("  ").append(path).append(w - path.size() + 2, ' ');
+            value(o);
+            o += '\n';
+        };
+        for_each_row(m, r, write);
     }
-    path_buf p;
-    auto write = [&](std::string_view path, const auto& value) {
-        o.append("  ").append(path).append(w - path.size() + 2, ' ');
-        value(o);
-        o += '\n';
-    };
-    for_each_row(m, p, write);
     for (const auto& n : notes) o.append("  note: ").append(n).append("\n");
 }
 

@@ -103,6 +103,34 @@ bool parse_hex_into(std::string_view text, byte_vector& out, std::string& error)
     return true;
 }
 
+bool parse_dashed_hex(std::string_view text, byte_vector& out, std::size_t& used) {
+    const std::size_t n = text.size();
+    // at most n / 3 + 1 bytes, written through a pointer: into a local array
+    // for a value of up to 512 bytes (no zero fill of `out` first), else into `out`
+    std::uint8_t local[512];
+    const bool small = n / 3 + 1 <= sizeof local;
+    if (!small) out.resize(n / 3 + 1);
+    std::uint8_t* const start = small ? local : out.data();
+    std::uint8_t* d = start;
+    std::size_t k = 0;
+    for (;;) {
+        if (k + 1 >= n) return false;
+        const unsigned hi = classes[static_cast<unsigned char>(text[k])];
+        const unsigned lo = classes[static_cast<unsigned char>(text[k + 1])];
+        if ((hi | lo) >= 16) return false;
+        *d++ = static_cast<std::uint8_t>(hi << 4 | lo);
+        k += 2;
+        if (k == n || text[k] != '-') break;
+        ++k;
+    }
+    if (small) out.assign(start, d);
+    else out.resize(static_cast<std::size_t>(d - start));
+    // what follows the value: the end, or a character that cannot continue it
+    if (k < n && (classes[static_cast<unsigned char>(text[k])] < 16 || text[k] == ':' || text[k] == ' ')) return false;
+    used = k;
+    return true;
+}
+
 bool looks_like_hex_text(std::span<const std::uint8_t> data) {
     bool any_digit = false;
     for (const std::uint8_t b : data) {

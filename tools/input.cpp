@@ -59,6 +59,22 @@ void input_stream::open_source(std::function<std::size_t(char*, std::size_t)> so
     source_ = std::move(source);
 }
 
+namespace {
+// The first CR or LF in [p, e), or e: memchr over windows growing 4 times each
+// (a file of CR line ends is not searched to its end for an LF at each line).
+const char* line_end(const char* p, const char* e) {
+    for (std::size_t window = 256;; window *= 4) {
+        const char* lim = static_cast<std::size_t>(e - p) > window ? p + window : e;
+        const auto* lf = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(lim - p)));
+        const char* upto = lf ? lf : lim;
+        if (const auto* cr = static_cast<const char*>(std::memchr(p, '\r', static_cast<std::size_t>(upto - p))))
+            return cr;
+        if (lf || lim == e) return upto;
+        p = lim;
+    }
+}
+}  // namespace
+
 bool input_stream::fill() {
     if (eof_) return false;
     if (pos_ > 0 && pos_ == buf_.size()) {
@@ -129,7 +145,7 @@ bool input_stream::next_line(std::string_view& line, std::size_t& length, bool& 
         }
         const char* b = buf_.data() + pos_;
         const char* e = buf_.data() + buf_.size();
-        const char* end = std::find_if(b + scanned, e, [](char c) { return c == '\n' || c == '\r'; });
+        const char* end = line_end(b + scanned, e);
         if (end != e) {
             const auto n = static_cast<std::size_t>(end - b);
             skip_lf_ = *end == '\r';
@@ -200,7 +216,10 @@ bool looks_like_hex_lines(std::span<const std::uint8_t> first) {
 }
 
 std::string control_byte(std::string_view line) {
-    if (std::none_of(line.begin(), line.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20; })) return {};
+    // the smallest byte first (a loop the compiler vectorizes): most lines have none below 0x20
+    unsigned char least = 0xFF;
+    for (const char c : line) least = std::min(least, static_cast<unsigned char>(c));
+    if (least >= 0x20) return {};
     for (std::size_t i = 0; i < line.size(); ++i) {
         const auto c = static_cast<unsigned char>(line[i]);
         if (c < 0x20 && c != '\t') {

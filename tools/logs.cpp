@@ -128,6 +128,8 @@ bool value_bytes(std::string_view v, byte_vector& out, std::string& error) {
     v = trim(v);
     if (starts_with(v, "(0x)")) v.remove_prefix(4);
     v = trim(v);
+    std::size_t used = 0;  // the common form, one pass
+    if (parse_dashed_hex(v, out, used)) return true;
     std::size_t n = 0;
     while (n < v.size() && (is_hex_digit(v[n]) || v[n] == '-' || v[n] == ':' || v[n] == ' ')) ++n;
     v = trim(v.substr(0, n));

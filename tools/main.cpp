@@ -256,9 +256,11 @@ struct osp_printer {
             std::string prefix;
             put_text_prefix(prefix, meta);
             const std::string bytes = hex_of(f);
-            if (!out.error(meta, o.error, prefix + "osp frame " + bytes + ": " + o.error + "\n",
-                           {{"protocol", "osp"}, {"bytes", bytes}}))
-                err_line("error: osp frame " + bytes + ": " + o.error);
+            std::string text = prefix + "osp frame " + bytes + ": " + o.error + "\n";
+            for (const auto& h : o.hints) text += prefix + "hint: " + h + "\n";
+            if (out.error(meta, o.error, text, {{"protocol", "osp"}, {"bytes", bytes}}, o.hints)) return;
+            err_line("error: osp frame " + bytes + ": " + o.error);
+            for (const auto& h : o.hints) err_line("hint: " + h);
         });
     }
     // bad_lines: hex text lines skipped (hex input only)

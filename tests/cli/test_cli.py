@@ -3,7 +3,7 @@
 Golden vectors are the unit tests' (worked out by hand from the documents);
 physical values are worked out by hand from the documents' units.
 Prints 'N passed, M failed' and exits 1 on any failure."""
-import json, os, shutil, subprocess, sys, tempfile, time
+import json, os, re, shutil, subprocess, sys, tempfile, time
 
 TOOL = sys.argv[1]
 passed = failed = 0
@@ -333,6 +333,12 @@ lines = [parse_json(l) for l in out.splitlines()]
 check([l.get("type") for l in lines] == ["message", "message", "error", "counters"], f"scan --json: only JSON lines: {out!r}")
 check([l.get("message") for l in lines[:2]] == ["soc", "voltage"] and lines[2].get("bytes") == "FF AA 03 01 0A 0B 0C 0D 55 77"
       and lines[3].get("frames") == 3 and lines[3].get("input") == "binary", f"scan --json: {lines}")
+# a scan's error record carries the hints decode gives for the same frame (DEV, CMD and parameters: bytes 2, 3, 4-7)
+check(lines[2].get("hints") == ["DEV 03 CMD 01 params 0A 0B 0C 0D"], f"scan --json error hints: {lines[2]}")
+rc, out, err = run("scan", "osp", "-", stdin=stream)
+check("unknown key 0x03 0x01 at byte 2\nhint: DEV 03 CMD 01 params 0A 0B 0C 0D\n" in out, f"scan error hints: {out!r}")
+drc, dout, derr = run("decode", "osp", "--json", "FF AA 03 01 0A 0B 0C 0D 55 77")
+check(parse_json(dout).get("hints") == lines[2].get("hints"), f"scan and decode hints: {dout!r}")
 check(lines[1].get("fields", {}).get("centivolts_physical") == {"value": 12.34, "unit": "V"}, "scan --json physical value")
 # --format: the same bytes as --json and as the default; the formats' names checked; not with --json
 check(run("scan", "osp", "--format", "json", stdin=stream) == run("scan", "osp", "--json", stdin=stream), "scan --format json")
@@ -479,11 +485,29 @@ check(rc == 2 and "30" in err, f"decode without protocol: {rc} {err!r}")
 rc, out, err = run("decode", "osp", "--file", "-", stdin=b"# nothing\n\n")
 check(rc == 1 and "no frame in stdin: 2 lines" in err, f"no frame: {rc} {err!r}")
 
+# text rows of one message type with and without its optional block (a 68-byte status, the
+# 54-byte form without pid_state, the 68-byte form again): each record as decode prints the frame alone
+forms = [status_dashes, status_dashes[:54 * 3 - 1], status_dashes]
+log = "nRF Connect, 2026-03-14\n" + "".join(f"I 10:12:0{i}.000 Notification received from {APP}, value: (0x) {v}\n"
+                                            for i, v in enumerate(forms))
+rc, out, err = run("decode", "buwizz3", "--file", "-", stdin=log.encode())
+records = re.split(r"^2026-03-14T10:12:0\d\.000 line \d \(device to host\): ", out, flags=re.M)[1:]
+alone = [run("decode", "buwizz3", v.replace("-", ""))[1] for v in forms]
+check(rc == 0 and len(records) == 3 and records == alone and "  pid_state  " in alone[1]
+      and "pid_state.output" in alone[0], f"text rows with and without an optional block: {out!r}")
+
 # scan buwizz3: the same, errors in line on stdout, counters last
 rc, out, err = run("scan", "buwizz3", "-", stdin=android_log.encode())
 last = out.strip().splitlines()[-1]
 check(rc == 0 and "line 22: error: set_motor_data.power: value out of range (valid -127..127 raw) at byte 1" in out and last.startswith("lines 25, frames 6, decoded 5, errors 1")
       and last.endswith("stdin read as nRF Connect (Android) log"), f"scan buwizz3: {rc} {last!r}")
+# its hint lines follow the error, as decode gives them (power[0] is byte 1, 0x80 = -128 as int8)
+check("line 22: error: set_motor_data.power: value out of range (valid -127..127 raw) at byte 1\n"
+      "2026-03-14T10:12:09.300 line 22: hint: power[0] at byte 1 is -128 (0x80)\n" in out, f"scan buwizz3 hints: {out!r}")
+rc, out, err = run("scan", "buwizz3", "-", "--json", stdin=android_log.encode())
+errors = [parse_json(l) for l in out.splitlines() if '"type":"error"' in l]
+check(len(errors) == 1 and errors[0].get("line") == 22 and errors[0].get("hints") == ["power[0] at byte 1 is -128 (0x80)"],
+      f"scan buwizz3 --json hints: {errors}")
 rc, out, err = run("scan", "buwizz3", "-", stdin=bytes.fromhex("30 7F 81 00 40 C0 01 21 3F"))
 check(rc == 1 and "reads text" in err and "binary" in err, f"scan buwizz3 binary: {rc} {err!r}")
 
