@@ -113,13 +113,12 @@
 // ROBOWIRE_COPY_RUNS: 1 lets decode copy each run of fields whose wire bytes
 // are their members' bytes at once (one memcpy of a constant size). Default 1
 // on little-endian targets that load unaligned words (x86, AArch64, ARMv7-M
-// and later, WebAssembly) unless ROBOWIRE_OPTIMIZE_SIZE; else 0 (field by
-// field, no library memcpy linked). Results are the same either way; define
-// it alike in every file of a program.
+// and later, WebAssembly), also under ROBOWIRE_OPTIMIZE_SIZE (the copies take
+// less code there); else 0 (field by field, no library memcpy linked). Results
+// are the same either way; define it alike in every file of a program.
 #ifndef ROBOWIRE_COPY_RUNS
-#if !ROBOWIRE_OPTIMIZE_SIZE &&                                                                                  \
-    (defined(__x86_64__) || defined(__i386__) || defined(_M_X64) || defined(_M_IX86) || defined(__aarch64__) || \
-     defined(_M_ARM64) || defined(__ARM_FEATURE_UNALIGNED) || defined(__wasm__))
+#if defined(__x86_64__) || defined(__i386__) || defined(_M_X64) || defined(_M_IX86) || defined(__aarch64__) || \
+    defined(_M_ARM64) || defined(__ARM_FEATURE_UNALIGNED) || defined(__wasm__)
 #define ROBOWIRE_COPY_RUNS 1
 #else
 #define ROBOWIRE_COPY_RUNS 0
