@@ -38,6 +38,14 @@ namespace robowire::detail::inline ROBOWIRE_MODE_NAMESPACE {
 struct prechecked {};
 template <class Err>
 inline constexpr bool checks_v = !std::is_same_v<Err, prechecked>;
+// The error sink of a one-pass decode into a message made just before (decode()
+// under ROBOWIRE_OPTIMIZE_SIZE): an absent optional block is left as made
+// (empty), not reset.
+struct fresh : error {
+    using error::operator=;
+};
+template <class Err>
+inline constexpr bool fresh_v = std::is_same_v<Err, fresh>;
 
 // A number, enum, bool or float of wire type W, valid in [Min, Max]: shared
 // by every field of the same kind and range (fewer functions to compile).
@@ -145,7 +153,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::ui
     auto& member = m.*member_ptr;
     if constexpr (F::is_optional) {
         if (in.size() <= off) {
-            member.reset();
+            if constexpr (!fresh_v<Err>) member.reset();
             return true;
         }  // absent
         if constexpr (checks_v<Err>) {
