@@ -189,7 +189,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::ui
 #endif
 template <class M>
 ROBOWIRE_ALWAYS_INLINE void flush(M& m, std::span<const std::uint8_t> in, const run& r) noexcept {
-    if (r.size != 0) std::memcpy(reinterpret_cast<unsigned char*>(&m) + r.mem, in.data() + r.wire, r.size);
+    if (r.size != 0) copy_run(reinterpret_cast<unsigned char*>(&m) + r.mem, in.data() + r.wire, r.size);
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
