@@ -5,6 +5,11 @@
 
 namespace osp = robowire::osp;
 
+#if defined(__arm__)
+static_assert(ROBOWIRE_OPTIMIZE_SIZE == 1 && ROBOWIRE_ARRAY_LOOPS == 1 && ROBOWIRE_COPY_RUNS == 1,
+              "docs/footprint.md states these settings for -Os on both Cortex-M cores");
+#endif
+
 ENTRY void osp_decode(std::span<const std::uint8_t> b) {
     const auto m = osp::decode(b);
     sink = m ? static_cast<std::uint32_t>(m->index()) : static_cast<std::uint32_t>(m.code());

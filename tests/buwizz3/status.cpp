@@ -73,6 +73,14 @@ TEST_CASE("buwizz3: 54-byte status twin", "[buwizz3][status]") {
     CHECK_FALSE(robowire::decode<status>(first(54))->pid_state.has_value());
 }
 
+TEST_CASE("buwizz3: decode_into a 54-byte status empties a held PID block", "[buwizz3][status]") {
+    status s = full_status();
+    REQUIRE(s.pid_state.has_value());
+    CHECK(robowire::decode_into(s, first(54)).code == errc::ok);
+    CHECK_FALSE(s.pid_state.has_value());
+    CHECK(s == twin54());
+}
+
 TEST_CASE("buwizz3: status flags and units", "[buwizz3][status]") {
     constexpr auto s = full_status();
     STATIC_REQUIRE(s.error());

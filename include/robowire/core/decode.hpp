@@ -95,11 +95,13 @@ ROBOWIRE_ALWAYS_INLINE constexpr void write_body(M& out, std::span<const std::ui
 // an error `out` is left as it was, and runs of fields are copied at once.
 // OnePass true: each field checked as it is written (less code), for an
 // output that is discarded on an error (a local, a result being built).
-template <class M, bool OnePass = false>
+// Fresh (with OnePass): `out` was made just before, so absent optional blocks
+// are empty already.
+template <class M, bool OnePass = false, bool Fresh = false>
 ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, std::span<const std::uint8_t> in) noexcept {
     constexpr std::size_t extent = table_v<M>.max_size();
     constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
-    error err{};
+    std::conditional_t<OnePass && Fresh, fresh, error> err{};
     if constexpr (OnePass) {
         const auto known = in.size() > extent ? in.first(extent) : in;
         if (!decode_record<M>(out, known, 0, err, fields)) return err;
@@ -240,7 +242,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const st
     } else if (error e{}; !input_ok<Known, M>(e, in)) {
         return e;
     }
-    return decode_body < M, ROBOWIRE_OPTIMIZE_SIZE && !Keep > (out, in);
+    return decode_body < M, ROBOWIRE_OPTIMIZE_SIZE && !Keep, !Keep > (out, in);
 }
 // decode_into's work, out of line: the input as pointer and size (a span that an
 // inlined caller passes on by value is copied through the stack first). Keep:

@@ -54,14 +54,14 @@ ROBOWIRE_ALWAYS_INLINE constexpr result<Message> decode_command(const Frame& f,
                                                                 const std::span<const std::uint8_t>& in) noexcept {
     constexpr std::size_t any = any_command_index_v<Message>;
     if constexpr (I == std::variant_size_v<Message>) {
-        return Message{std::in_place_index<any>, f};
+        return result<Message>(std::in_place, f);  // built in place: no Message temporary on the stack
     } else {
         if constexpr (I != any) {
             using alternative = std::variant_alternative_t<I, Message>;
             if (f.command == command_of<alternative>()) {
                 const auto m = robowire::decode<alternative>(in);
                 if (!m) return codec::unchecked_error(m);
-                return Message{std::in_place_index<I>, *m};
+                return result<Message>(std::in_place, *m);
             }
         }
         return decode_command<Message, I + 1>(f, in);

@@ -188,9 +188,19 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_in_range(decode_result& d, std::uin
 template <std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::span<const std::uint8_t> in,
                                                     std::index_sequence<I...> all) noexcept {
-    if constexpr (ROBOWIRE_OPTIMIZE_SIZE)
-        decode_by_key_chain(d, static_cast<std::uint16_t>(in[2] << 8 | in[3]), in, all);
-    else decode_in_range<0, sizeof...(I)>(d, static_cast<std::uint16_t>(in[2] | in[3] << 8), in);
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
+        if (std::is_constant_evaluated()) {
+            decode_by_key_chain(d, static_cast<std::uint16_t>(in[2] << 8 | in[3]), in, all);
+        } else {  // the key's index by a loop over keys_v (in flash), then a dense switch on it
+            const auto key = static_cast<std::uint16_t>(in[2] << 8 | in[3]);
+            std::size_t i = 0;
+            while (i < sizeof...(I) && keys_v<message>[i] != key) ++i;
+            if (i == sizeof...(I)) d = fail(errc::unknown_message, 2);
+            else ((i == I ? decode_message<I>(d, in) : void()), ...);
+        }
+    } else {
+        decode_in_range<0, sizeof...(I)>(d, static_cast<std::uint16_t>(in[2] | in[3] << 8), in);
+    }
 }
 // Checks m's fields and writes them into `out` (FF AA DEV CMD 00 00 00 00 55 77 written already).
 template <class M>

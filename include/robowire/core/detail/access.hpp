@@ -7,6 +7,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -185,6 +186,18 @@ inline constexpr bool same_bytes_v = [] {
 struct run {
     std::size_t wire = 0, mem = 0, size = 0;  // byte offsets in the input and in the object; 0: no run
 };
+// Copies a run of n bytes (a constant once inlined). Where words cannot be
+// loaded unaligned (Cortex-M0+), a short run byte by byte: a few loads and
+// stores instead of a library call.
+ROBOWIRE_ALWAYS_INLINE void copy_run(unsigned char* to, const unsigned char* from, std::size_t n) noexcept {
+#if defined(__arm__) && !defined(__ARM_FEATURE_UNALIGNED)
+    if (n <= 4) {
+        for (std::size_t k = 0; k < n; ++k) to[k] = from[k];
+        return;
+    }
+#endif
+    std::memcpy(to, from, n);
+}
 template <class M>
 inline std::size_t offset_in(const M& m, const void* member) noexcept {
     return static_cast<std::size_t>(static_cast<const unsigned char*>(member) -

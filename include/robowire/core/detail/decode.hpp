@@ -38,6 +38,14 @@ namespace robowire::detail::inline ROBOWIRE_MODE_NAMESPACE {
 struct prechecked {};
 template <class Err>
 inline constexpr bool checks_v = !std::is_same_v<Err, prechecked>;
+// The error sink of a one-pass decode into a message made just before (decode()
+// under ROBOWIRE_OPTIMIZE_SIZE): an absent optional block is left as made
+// (empty), not reset.
+struct fresh : error {
+    using error::operator=;
+};
+template <class Err>
+inline constexpr bool fresh_v = std::is_same_v<Err, fresh>;
 
 // A number, enum, bool or float of wire type W, valid in [Min, Max]: shared
 // by every field of the same kind and range (fewer functions to compile).
@@ -145,7 +153,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::ui
     auto& member = m.*member_ptr;
     if constexpr (F::is_optional) {
         if (in.size() <= off) {
-            member.reset();
+            if constexpr (!fresh_v<Err>) member.reset();
             return true;
         }  // absent
         if constexpr (checks_v<Err>) {
@@ -181,7 +189,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::ui
 #endif
 template <class M>
 ROBOWIRE_ALWAYS_INLINE void flush(M& m, std::span<const std::uint8_t> in, const run& r) noexcept {
-    if (r.size != 0) std::memcpy(reinterpret_cast<unsigned char*>(&m) + r.mem, in.data() + r.wire, r.size);
+    if (r.size != 0) copy_run(reinterpret_cast<unsigned char*>(&m) + r.mem, in.data() + r.wire, r.size);
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
@@ -206,6 +214,49 @@ ROBOWIRE_ALWAYS_INLINE void copy_or_decode(M& m, std::span<const std::uint8_t> i
     }
 }
 
+// Is field I of M decoded with no check (every value of its wire bytes valid:
+// full-range integers, floats, records of such fields)? Then a pass that
+// checks as it writes may copy it too.
+template <class M, std::size_t I>
+constexpr bool unchecked_field() noexcept;
+template <class E, std::size_t... J>
+constexpr bool unchecked_record(std::index_sequence<J...>) noexcept {
+    return (unchecked_field<E, J>() && ...);
+}
+template <class M, std::size_t I>
+constexpr bool unchecked_field() noexcept {
+    using F = field_t<M, I>;
+    using E = typename F::element_type;
+    using W = typename F::wire_type;
+    if constexpr (F::is_optional) {
+        return false;
+    } else if constexpr (F::kind == wire_kind::record) {
+        return unchecked_record<E>(std::make_index_sequence<field_count_v<E>>{});
+    } else if constexpr (!scalar_wire_v<W> || std::is_enum_v<E> || !same_bytes_v<W, E>) {
+        return false;
+    } else if constexpr (W::kind == wire_kind::f32le) {
+        return true;
+    } else {
+        using raw = typename W::raw_type;
+        return field_v<M, I>.valid.min <= std::numeric_limits<raw>::min() &&
+               field_v<M, I>.valid.max >= std::numeric_limits<raw>::max();
+    }
+}
+// copy_or_decode for a pass that checks as it writes (one pass; its output is
+// discarded on an error, so a run left pending then is never copied).
+template <class M, std::size_t I, class Err>
+ROBOWIRE_ALWAYS_INLINE bool copy_or_check(M& m, std::span<const std::uint8_t> in, std::size_t base, run& r,
+                                          Err& err) noexcept {
+    if constexpr (unchecked_field<M, I>()) {
+        copy_or_decode<M, I>(m, in, base, r);
+        return true;
+    } else {
+        flush(m, in, r);
+        r = {};
+        return decode_field<M, I>(m, in, base, err);
+    }
+}
+
 template <class M, class Err, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, std::size_t base, Err& err,
                                                     std::index_sequence<I...>) noexcept {
@@ -214,6 +265,13 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::u
         if (!std::is_constant_evaluated()) {
             run r{};
             (copy_or_decode<M, I>(m, in, base, r), ...);
+            flush(m, in, r);
+            return true;
+        }
+    } else if constexpr (ROBOWIRE_OPTIMIZE_SIZE && ROBOWIRE_COPY_RUNS) {  // one pass: unchecked fields copied
+        if (!std::is_constant_evaluated()) {
+            run r{};
+            if (!(copy_or_check<M, I>(m, in, base, r, err) && ...)) return false;
             flush(m, in, r);
             return true;
         }

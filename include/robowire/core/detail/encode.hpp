@@ -199,7 +199,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr void store_field(const M& m, std::span<std::uin
 // copied from the object into the output.
 template <class M>
 ROBOWIRE_ALWAYS_INLINE void store_run(const M& m, std::span<std::uint8_t> out, const run& r) noexcept {
-    if (r.size != 0) std::memcpy(out.data() + r.wire, reinterpret_cast<const unsigned char*>(&m) + r.mem, r.size);
+    if (r.size != 0) copy_run(out.data() + r.wire, reinterpret_cast<const unsigned char*>(&m) + r.mem, r.size);
 }
 // Field I: joins the current run, starts one, or is stored on its own.
 template <class M, std::size_t I>
