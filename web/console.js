@@ -64,16 +64,14 @@ const accelChart = new LineChart($('chart-accel'), {
   minSpan: 2,
 });
 
-const physical = (f, name) => (f && typeof f === 'object' && 'value' in f ? f.value : f);
-
 function showStatus(fields) {
-  const volts = physical(fields.battery_voltage);
+  // physical values as the package gives them: { value, unit } (V, A, mg)
+  const volts = fields.battery_voltage.value;
   $('battery').textContent = `${volts.toFixed(2)} V`;
   $('temperature').textContent = `${fields.temperature_c} °C`;
-  const amps = fields.motor_current.map((c) => physical(c));
+  const amps = fields.motor_current.value;
   amps.forEach((a, i) => { $(`current-${i + 1}`).textContent = `${a.toFixed(3)} A`; });
-  // 0.488 mg per count of the 16-bit word (docs/buwizz3.md), shown in g
-  const g = fields.accel_raw.map((w) => (w * 0.488) / 1000);
+  const g = fields.accel.value.map((mg) => mg / 1000);
   ['x', 'y', 'z'].forEach((axis, i) => { $(`accel-${axis}`).textContent = `${g[i].toFixed(3)} g`; });
   currentChart.push(amps);
   accelChart.push(g);
