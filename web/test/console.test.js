@@ -184,6 +184,56 @@ test('hex box decodes pasted hex and reports bad hex', async () => {
   assert.match(await text('#hex-output'), /^error: .*out of range/);
 });
 
+// NAVBOT-ES02 and OSP run when the package has them (feature check in the page, as the console does).
+const has = (name) => page.evaluate((n) => import('/js/index.js').then((m) => Boolean(m[n])), name);
+async function reopen(protocol) {
+  await page.goto(url);
+  await page.waitForSelector('body[data-ready="true"]');
+  await page.selectOption('#protocol', protocol);
+}
+
+test('NAVBOT-ES02: notifications reassembled, decoded and logged', async (t) => {
+  if (!(await has('navbot'))) {
+    await reopen('navbot');
+    assert.match(await text('#support'), /not in this package build/);
+    return t.skip('the package has no navbot (the pane says "not in this package build", checked)');
+  }
+  await reopen('navbot');
+  await page.click('#connect');
+  await until('connected', async () => (await text('#state')).startsWith('connected'));
+  const req = await page.evaluate(() => window.fake.requests.at(-1));
+  assert.deepEqual(req.filters[0].services, ['6e400011-b5a3-f393-e0a9-e50e24dcca9e']);
+  // docs/cli.md: a text frame, command 2, remaining 0, payload {"a":1}
+  await page.evaluate(() => window.fake.notify('55 AA 02 00 00 7B 22 61 22 3A 31 7D 00 00 00 00 00 00 00 00', '6e400013-b5a3-f393-e0a9-e50e24dcca9e'));
+  await until('logged frame', async () => (await text('#log-count')) === '1');
+  assert.equal(await text('#error-count'), '0');
+  // docs/cli.md: maneuver with pitch 0x8A = -118, out of -100..100
+  await page.evaluate(() => window.fake.notify('55 AA 10 00 00 00 00 8A 00 01 00 00 00 00 00 00 00 00 00 00', '6e400013-b5a3-f393-e0a9-e50e24dcca9e'));
+  await until('error row', async () => (await text('#error-count')) === '1');
+  assert.match(await page.locator('#log .error').last().textContent(), /pitch/);
+});
+
+test('OSP: the serial stream at 115200 baud scanned, decoded and logged', async (t) => {
+  if (!(await has('osp'))) {
+    await reopen('osp');
+    assert.match(await text('#support'), /not in this package build/);
+    return t.skip('the package has no osp (the pane says "not in this package build", checked)');
+  }
+  await reopen('osp');
+  await page.click('#connect');
+  await until('connected', async () => (await text('#state')).startsWith('connected'));
+  assert.equal(await page.evaluate(() => window.fake.serialOptions.baudRate), 115200);
+  // docs/osp.md: voltage 1260 cV (12.60 V) = FF AA 02 12 EC 04 00 00 55 77, split across two reads
+  await page.evaluate(() => window.fake.serialData('FF AA 02 12 EC'));
+  await page.evaluate(() => window.fake.serialData('04 00 00 55 77'));
+  await until('voltage row', async () => /1260/.test(await text('#log')));
+  // docs/cli.md: key 03 01 is unknown
+  await page.evaluate(() => window.fake.serialData('FF AA 03 01 0A 0B 0C 0D 55 77'));
+  await until('error row', async () => (await text('#error-count')) === '1');
+  assert.match(await page.locator('#log .error').last().textContent(), /unknown key/);
+  if (shots) await page.screenshot({ path: path.join(shots, 'console-osp.png') });
+});
+
 test('no uncaught error in the page', () => {
   assert.deepEqual(pageErrors, []);
 });
