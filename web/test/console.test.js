@@ -79,7 +79,18 @@ async function until(what, check, ms = 5000) {
 const statusA = '01 18 50 0A 14 1E 28 64 C8 19 00 08 00 F8 00 10' + ' 00'.repeat(38);
 // battery raw 100 -> 14.00 V; currents 0..5 x 0.015 A; accel 0, 0, 0x0800 -> 0.999 g
 const statusB = '01 18 64 00 01 02 03 04 05 19 00 00 00 00 00 08' + ' 00'.repeat(38);
-const truncated = '01 18 50 0A';  // a status cut after 4 bytes
+const truncated = '01 18 50 0A';
+// For the screenshot only (nothing is checked): currents and accel that move.
+function chartFrame(i) {
+  const b = new Uint8Array(54);
+  b[0] = 1; b[1] = 0x18; b[2] = 80 - Math.floor(i / 20); b[9] = 25;
+  for (let p = 0; p < 6; p++) b[3 + p] = Math.round(40 + 35 * Math.sin(i / 8 + p));
+  const dv = new DataView(b.buffer);
+  dv.setInt16(10, Math.round(800 * Math.sin(i / 6)), true);
+  dv.setInt16(12, Math.round(800 * Math.cos(i / 6)), true);
+  dv.setInt16(14, 2048, true);
+  return Array.from(b, (x) => x.toString(16).padStart(2, '0')).join(' ');
+}  // a status cut after 4 bytes
 
 test('BuWizz3: connect writes the data period, the motor timeout and the watchdog', async () => {
   assert.equal(statusA.split(' ').length, 54);
@@ -128,8 +139,8 @@ test('BuWizz3: sliders send set_motor_data in raw power', async () => {
   await slide(6, -100);  // -127 = 0x81
   await until('motor write', async () => (await writes()).slice(before).includes('30 40 7E 00 00 00 81 00 00'));
   if (shots) {
-    for (let i = 0; i < 30; i++) await notify(i % 2 ? statusA : statusB);  // something to chart
-    await page.screenshot({ path: path.join(shots, 'console-buwizz3.png') });
+    for (let i = 0; i < 60; i++) await notify(chartFrame(i));  // something to chart
+    await page.screenshot({ path: path.join(shots, 'console-buwizz3.png'), clip: { x: 0, y: 0, width: 900, height: 640 } });
   }
 });
 
