@@ -6,10 +6,9 @@ import * as util from './util.js';
 
 const $ = (id) => document.getElementById(id);
 const bw = rw.buwizz3;
-const uuids = {
-  service: bw.uuids?.service ?? util.buwizz3Uuids.service,
-  application: bw.uuids?.application ?? util.buwizz3Uuids.application,
-};
+// The package's UUID strings when it has them, else those of docs/buwizz3.md.
+const strings = (o) => Object.fromEntries(Object.entries(o ?? {}).filter(([, v]) => typeof v === 'string'));
+const uuids = { ...util.buwizz3Uuids, ...strings(bw.uuids) };
 const powerFromPercent = bw.powerFromPercent ?? util.powerFromPercent;
 const DATA_PERIOD_MS = 50;     // status every 50 ms (0x32, 20..255 ms)
 const WATCHDOG_S = 2;          // the brick drops the link and stops the motors after 2 s without 0x35
@@ -162,7 +161,7 @@ async function connectBuwizz3() {
 // ---- NAVBOT-ES02 ---------------------------------------------------------------
 async function connectNavbot() {
   const nb = rw.navbot;
-  const u = { ...util.navbotUuids, ...(nb.uuids ?? {}) };
+  const u = { ...util.navbotUuids, ...strings(nb.uuids) };
   const device = await navigator.bluetooth.requestDevice({ filters: [{ services: [u.service] }], optionalServices: [u.service] });
   const server = await device.gatt.connect();
   const service = await server.getPrimaryService(u.service);
@@ -182,7 +181,7 @@ async function connectNavbot() {
 function recordEntry(r, chunk, direction) {
   const hex = r.hex ?? r.frame ?? r.bytes;
   const bytes = hex instanceof Uint8Array ? hex : typeof hex === 'string' ? util.parseHex(hex) : chunk;
-  return r.type === 'error' ? { direction, bytes, error: r.message ?? r.error ?? JSON.stringify(r) } : { direction, bytes, decoded: r };
+  return r.type === 'error' ? { direction, bytes, error: r.error ?? r.message ?? JSON.stringify(r) } : { direction, bytes, decoded: r };
 }
 
 // ---- OSP -------------------------------------------------------------------------
