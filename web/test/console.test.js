@@ -140,7 +140,7 @@ test('BuWizz3: sliders send set_motor_data in raw power', async () => {
   await until('motor write', async () => (await writes()).slice(before).includes('30 40 7E 00 00 00 81 00 00'));
   if (shots) {
     for (let i = 0; i < 60; i++) await notify(chartFrame(i));  // something to chart
-    await page.screenshot({ path: path.join(shots, 'console-buwizz3.png'), clip: { x: 0, y: 0, width: 900, height: 640 } });
+    await page.screenshot({ path: path.join(shots, 'console-buwizz3.png'), clip: { x: 0, y: 0, width: 880, height: 440 } });
   }
 });
 
