@@ -195,6 +195,24 @@ test('hex box decodes pasted hex and reports bad hex', async () => {
   assert.match(await text('#hex-output'), /^error: .*out of range/);
 });
 
+test('BuWizz3: Stop all sends zero power; Disconnect stops the keep-alive', async () => {
+  const zero = '30 00 00 00 00 00 00 00 00';
+  let n = (await writes()).length;
+  await page.click('#stop');
+  await until('zero power', async () => (await writes()).slice(n).includes(zero));
+  assert.equal(await page.locator('#power-6').inputValue(), '0');
+  await slide(3, 100);  // 127 = 0x7F
+  await until('port 3', async () => (await writes()).slice(n).includes('30 00 00 7F 00 00 00 00 00'));
+  n = (await writes()).length;
+  await page.click('#disconnect');
+  await until('zero power on disconnect', async () => (await writes()).slice(n).includes(zero));
+  assert.equal(await page.evaluate(() => window.fake.connected), false);
+  n = (await writes()).length;
+  await new Promise((r) => setTimeout(r, 1500));  // more than one keep-alive period
+  assert.deepEqual((await writes()).slice(n), []);
+  assert.equal(await text('#state'), 'not connected');
+});
+
 // NAVBOT-ES02 and OSP run when the package has them (feature check in the page, as the console does).
 const has = (name) => page.evaluate((n) => import('/js/index.js').then((m) => Boolean(m[n])), name);
 async function reopen(protocol) {
