@@ -2,9 +2,9 @@
 // and desktop). Each line that holds a frame is decoded with its line number;
 // the line says the direction and, in Android logs, the characteristic UUID,
 // which picks the protocol. `scan navbot` reassembles multi-frame messages.
-#include <robowire/buwizz3/uuids.hpp>
 #include <robowire/navbot/frame.hpp>
 #include <robowire/navbot/multiframe.hpp>
+#include <robowire/protocols.hpp>
 
 #include <algorithm>
 #include <array>
@@ -246,10 +246,9 @@ struct known_uuid {
 std::optional<known_uuid> protocol_of_uuid_uncached(const std::string& uuid) {
     const auto u = uuid128::parse(uuid);
     if (!u) return std::nullopt;
-    if (*u == robowire::buwizz3::application_uuid)
-        return known_uuid{&buwizz3_protocol(), "BuWizz3 application characteristic"};
-    if (*u == robowire::navbot::write_uuid) return known_uuid{&navbot_protocol(), "NAVBOT write characteristic"};
-    if (*u == robowire::navbot::notify_uuid) return known_uuid{&navbot_protocol(), "NAVBOT notify characteristic"};
+    for (const auto* d : robowire::all_protocols)
+        if (const auto* c = d->find(*u))
+            if (const protocol* p = find_protocol(d->name)) return known_uuid{p, c->label.data()};
     return std::nullopt;
 }
 

@@ -8,3 +8,4 @@
 #include "fuzz.hpp"
 #include "navbot.hpp"
 #include "osp.hpp"
+#include "protocols.hpp"
