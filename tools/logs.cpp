@@ -252,6 +252,12 @@ std::optional<known_uuid> protocol_of_uuid_uncached(const std::string& uuid) {
     return std::nullopt;
 }
 
+// Whether `scan` reassembles the protocol's frames into messages (its descriptor's stream kind).
+bool reassembles(const protocol* p) {
+    const auto* d = robowire::find_descriptor(p->name);
+    return d != nullptr && d->stream == robowire::stream_kind::reassembler;
+}
+
 // The same, remembering the last UUID asked for (a log asks for the same few again and again).
 std::optional<known_uuid> protocol_of_uuid(const std::string& uuid) {
     static std::string last;
@@ -531,8 +537,7 @@ private:
         const outcome o = p->decode(pl.bytes, d, out_, meta);
         if (o.status != exit_ok) fail(num, pl, p, o.error, o.hints, o.status);
         else ++c_.decoded;
-        if (opt_.scan && p == &navbot_protocol() && pl.bytes.size() == robowire::navbot::frame_size)
-            reassemble(num, pl);
+        if (opt_.scan && reassembles(p) && pl.bytes.size() == robowire::navbot::frame_size) reassemble(num, pl);
         return true;
     }
 
@@ -658,7 +663,7 @@ private:
                                                                  {"lines_without_frame", c_.no_frame},
                                                                  {"other_characteristics", c_.other}};
         if (opt_.since || opt_.until) cs.emplace_back("outside_time_range", c_.outside);
-        if (opt_.scan && p_ == &navbot_protocol()) {
+        if (opt_.scan && reassembles(p_)) {
             cs.insert(cs.end(), {{"messages_reassembled", c_.messages},
                                  {"duplicates", c_.duplicates},
                                  {"restarted", c_.restarts},
