@@ -535,7 +535,8 @@ int main(int argc, char** argv) {
         const auto mode = scan_hex ? input_mode::hex : scan_bin ? input_mode::binary : input_mode::detect;
         const auto out = scan_format.make();
         if (!out) return exit_usage;
-        if (robowire::find_descriptor(scan_protocol)->stream != robowire::stream_kind::scanner)
+        const auto* d = robowire::find_descriptor(scan_protocol);  // none: one frame per line
+        if (d == nullptr || d->stream != robowire::stream_kind::scanner)
             return run_scan_lines(*find_protocol(scan_protocol), scan_path, *out, mode);
         return run_scan(scan_path, *out, mode);
     }
