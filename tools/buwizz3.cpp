@@ -1,5 +1,7 @@
 // BuWizz3: commands (host -> device) and notifications (device -> host), from
 // buwizz3::command and buwizz3::notification.
+#include <robowire/buwizz3/protocol.hpp>
+
 #include "describe.hpp"
 #include "emit.hpp"
 
@@ -93,7 +95,8 @@ std::string list(bool fields) {
 }  // namespace
 
 const protocol& buwizz3_protocol() {
-    static const protocol p{"buwizz3", "BLE; byte 0 = command", true, list, decode, buwizz3_encode};
+    static const protocol p{
+        robowire::buwizz3::descriptor.name, robowire::buwizz3::descriptor.summary, true, list, decode, buwizz3_encode};
     return p;
 }
 

@@ -2,9 +2,9 @@
 // and desktop). Each line that holds a frame is decoded with its line number;
 // the line says the direction and, in Android logs, the characteristic UUID,
 // which picks the protocol. `scan navbot` reassembles multi-frame messages.
-#include <robowire/buwizz3/uuids.hpp>
 #include <robowire/navbot/frame.hpp>
 #include <robowire/navbot/multiframe.hpp>
+#include <robowire/protocols.hpp>
 
 #include <algorithm>
 #include <array>
@@ -248,11 +248,16 @@ struct known_uuid {
 std::optional<known_uuid> protocol_of_uuid_uncached(const std::string& uuid) {
     const auto u = uuid128::parse(uuid);
     if (!u) return std::nullopt;
-    if (*u == robowire::buwizz3::application_uuid)
-        return known_uuid{&buwizz3_protocol(), "BuWizz3 application characteristic"};
-    if (*u == robowire::navbot::write_uuid) return known_uuid{&navbot_protocol(), "NAVBOT write characteristic"};
-    if (*u == robowire::navbot::notify_uuid) return known_uuid{&navbot_protocol(), "NAVBOT notify characteristic"};
+    for (const auto* d : robowire::all_protocols)
+        if (const auto* c = d->find(*u))
+            if (const protocol* p = find_protocol(d->name)) return known_uuid{p, c->label.data()};
     return std::nullopt;
+}
+
+// Whether `scan` reassembles the protocol's frames into messages (its descriptor's stream kind).
+bool reassembles(const protocol* p) {
+    const auto* d = robowire::find_descriptor(p->name);
+    return d != nullptr && d->stream == robowire::stream_kind::reassembler;
 }
 
 // The same, remembering the last UUID asked for (a log asks for the same few again and again).
@@ -534,8 +539,7 @@ private:
         const outcome o = p->decode(pl.bytes, d, out_, meta);
         if (o.status != exit_ok) fail(num, pl, p, o.error, o.hints, o.status);
         else ++c_.decoded;
-        if (opt_.scan && p == &navbot_protocol() && pl.bytes.size() == robowire::navbot::frame_size)
-            reassemble(num, pl);
+        if (opt_.scan && reassembles(p) && pl.bytes.size() == robowire::navbot::frame_size) reassemble(num, pl);
         return true;
     }
 
@@ -661,7 +665,7 @@ private:
                                                                  {"lines_without_frame", c_.no_frame},
                                                                  {"other_characteristics", c_.other}};
         if (opt_.since || opt_.until) cs.emplace_back("outside_time_range", c_.outside);
-        if (opt_.scan && p_ == &navbot_protocol()) {
+        if (opt_.scan && reassembles(p_)) {
             cs.insert(cs.end(), {{"messages_reassembled", c_.messages},
                                  {"duplicates", c_.duplicates},
                                  {"restarted", c_.restarts},

@@ -4,6 +4,7 @@
 // Commands and options: CLI11. Output: render.cpp (text or JSON lines).
 #include <CLI/CLI.hpp>
 #include <robowire/osp/scanner.hpp>
+#include <robowire/protocols.hpp>
 
 #include <fcntl.h>
 #include <poll.h>
@@ -479,7 +480,7 @@ int main(int argc, char** argv) {
     auto* scan = app.add_subcommand("scan",
                                     "osp: find and decode frames in a byte stream (binary or hex text); "
                                     "buwizz3, navbot: every frame of a log, one per line, NAVBOT messages reassembled");
-    scan->add_option("protocol", scan_protocol, "osp, buwizz3 or navbot")->required()->check(CLI::IsMember(names));
+    scan->add_option("protocol", scan_protocol, one_of)->required()->check(CLI::IsMember(names));
     scan->add_option("file", scan_path, "file to read, - for stdin (default)");
     add_format_options(*scan, scan_format, "JSON lines on stdout: messages, errors, counters (each with a \"type\")",
                        false);
@@ -536,7 +537,9 @@ int main(int argc, char** argv) {
         const auto mode = scan_hex ? input_mode::hex : scan_bin ? input_mode::binary : input_mode::detect;
         const auto out = scan_format.make();
         if (!out) return exit_usage;
-        if (scan_protocol != "osp") return run_scan_lines(*find_protocol(scan_protocol), scan_path, *out, mode);
+        const auto* d = robowire::find_descriptor(scan_protocol);  // none: one frame per line
+        if (d == nullptr || d->stream != robowire::stream_kind::scanner)
+            return run_scan_lines(*find_protocol(scan_protocol), scan_path, *out, mode);
         return run_scan(scan_path, *out, mode);
     }
     if (mon->parsed()) return run_monitor(mon_opt);

@@ -1,4 +1,6 @@
 // NAVBOT-ES02: 20-byte frames, from navbot::message.
+#include <robowire/navbot/protocol.hpp>
+
 #include "describe.hpp"
 #include "emit.hpp"
 
@@ -33,7 +35,8 @@ outcome encode(std::string_view message, const std::vector<std::pair<std::string
 }  // namespace
 
 const protocol& navbot_protocol() {
-    static const protocol p{"navbot", "BLE; 20-byte frames", false, list, decode, encode};
+    static const protocol p{
+        robowire::navbot::descriptor.name, robowire::navbot::descriptor.summary, false, list, decode, encode};
     return p;
 }
 

@@ -1,4 +1,6 @@
 // OSP: 10-byte serial frames FF AA DEV CMD P1..P4 55 77, from osp::message.
+#include <robowire/osp/protocol.hpp>
+
 #include "describe.hpp"
 #include "emit.hpp"
 
@@ -45,7 +47,8 @@ outcome encode(std::string_view message, const std::vector<std::pair<std::string
 }  // namespace
 
 const protocol& osp_protocol() {
-    static const protocol p{"osp", "serial; FF AA DEV CMD P1..P4 55 77", false, list, decode, encode};
+    static const protocol p{
+        robowire::osp::descriptor.name, robowire::osp::descriptor.summary, false, list, decode, encode};
     return p;
 }
 

@@ -6,6 +6,7 @@
 #include "buwizz3/advertisement.hpp"
 #include "buwizz3/commands.hpp"
 #include "buwizz3/decode.hpp"
+#include "buwizz3/protocol.hpp"
 #include "buwizz3/status.hpp"
 #include "buwizz3/units.hpp"
 #include "buwizz3/uuids.hpp"

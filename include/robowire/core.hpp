@@ -7,6 +7,7 @@
 #include "core/bits.hpp"
 #include "core/bytes.hpp"
 #include "core/decode.hpp"
+#include "core/descriptor.hpp"
 #include "core/dispatch.hpp"
 #include "core/divide.hpp"
 #include "core/encode.hpp"

@@ -7,3 +7,4 @@
 #include "navbot/frame.hpp"
 #include "navbot/maneuver.hpp"
 #include "navbot/multiframe.hpp"
+#include "navbot/protocol.hpp"

@@ -6,5 +6,6 @@
 #include "osp/decode.hpp"
 #include "osp/frame.hpp"
 #include "osp/messages.hpp"
+#include "osp/protocol.hpp"
 #include "osp/scanner.hpp"
 #include "osp/units.hpp"

@@ -8,4 +8,5 @@
 #include "core.hpp"
 #include "navbot.hpp"
 #include "osp.hpp"
+#include "protocols.hpp"
 #include "reflect.hpp"
