@@ -1,5 +1,5 @@
-// robowire/robowire.hpp - the core, the three protocols and reflect.hpp (not the
-// optional extras under ext/, nor fuzz.hpp, their former path).
+// robowire/robowire.hpp - the core, the three protocols, their descriptors and
+// reflect.hpp (not the optional extras under ext/, nor fuzz.hpp, their former path).
 #pragma once
 
 #include "core/config.hpp"  // first: the C++ version check
