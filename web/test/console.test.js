@@ -220,16 +220,22 @@ async function reopen(protocol) {
   await page.waitForSelector('body[data-ready="true"]');
   await page.selectOption('#protocol', protocol);
 }
-
-test('NAVBOT-ES02: notifications reassembled, decoded and logged', async (t) => {
-  if (!(await has('navbot'))) {
-    await reopen('navbot');
+// Opens the console on `protocol` and connects; without it in the package, checks the pane
+// says so, skips the test and returns false.
+async function connectOrSkip(t, protocol) {
+  await reopen(protocol);
+  if (!(await has(protocol))) {
     assert.match(await text('#support'), /not in this package build/);
-    return t.skip('the package has no navbot (the pane says "not in this package build", checked)');
+    t.skip(`the package has no ${protocol} (the pane says "not in this package build", checked)`);
+    return false;
   }
-  await reopen('navbot');
   await page.click('#connect');
   await until('connected', async () => (await text('#state')).startsWith('connected'));
+  return true;
+}
+
+test('NAVBOT-ES02: notifications reassembled, decoded and logged', async (t) => {
+  if (!(await connectOrSkip(t, 'navbot'))) return;
   const req = await page.evaluate(() => window.fake.requests.at(-1));
   assert.deepEqual(req.filters[0].services, ['6e400011-b5a3-f393-e0a9-e50e24dcca9e']);
   // docs/cli.md: a text frame, command 2, remaining 0, payload {"a":1}
@@ -243,14 +249,7 @@ test('NAVBOT-ES02: notifications reassembled, decoded and logged', async (t) => 
 });
 
 test('OSP: the serial stream at 115200 baud scanned, decoded and logged', async (t) => {
-  if (!(await has('osp'))) {
-    await reopen('osp');
-    assert.match(await text('#support'), /not in this package build/);
-    return t.skip('the package has no osp (the pane says "not in this package build", checked)');
-  }
-  await reopen('osp');
-  await page.click('#connect');
-  await until('connected', async () => (await text('#state')).startsWith('connected'));
+  if (!(await connectOrSkip(t, 'osp'))) return;
   assert.equal(await page.evaluate(() => window.fake.serialOptions.baudRate), 115200);
   // docs/osp.md: voltage 1260 cV (12.60 V) = FF AA 02 12 EC 04 00 00 55 77, split across two reads
   await page.evaluate(() => window.fake.serialData('FF AA 02 12 EC'));
