@@ -210,7 +210,7 @@ for v in VECTORS["errors"]:
         continue  # no bytes: nothing to give on the command line
     extra = ["--direction", v["direction"]] if v["direction"] else []
     check(v["error"].endswith(f"at byte {v['offset']}"), f"vector {v['hex']}: its line ends at byte {v['offset']}")
-    BAD.append((["decode", v["protocol"], v["hex"], *extra], 1, v["error"], v.get("hints", []), "some"))
+    BAD.append((["decode", v["protocol"], v["hex"], *extra], 1, v["error"], v.get("cli_hints", []), "some"))
 for args, status, line, hints, *some in BAD:
     exact = not some  # every hint line has one of the texts (the vectors' errors: each text is in one of them)
     rc, out, err = run(*args)
@@ -692,7 +692,7 @@ for v in VECTORS["errors"]:
         rc, out, err = run("decode", v["protocol"], v["hex"], "--json", *extra)
         doc = parse_json(out)
         check(rc == 1 and doc.get("type") == "error" and doc.get("error") == v["error"]
-              and all(any(h in n for n in doc.get("hints", [])) for h in v.get("hints", [])), f"decode --json error {v['hex']}: {out!r}")
+              and all(any(h in n for n in doc.get("hints", [])) for h in v.get("cli_hints", [])), f"decode --json error {v['hex']}: {out!r}")
 for v in VECTORS["osp_scan"]:
     rc, out, err = run("scan", "osp", "--json", stdin=bytes.fromhex(v["hex"]))
     docs = [parse_json(l) for l in out.splitlines()]

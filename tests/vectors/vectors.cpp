@@ -183,15 +183,17 @@ int main(int argc, char** argv) {
         // byte by byte and whole: the same frames
         for (const std::size_t chunk : {std::size_t{1}, stream.size()}) {
             robowire::osp::scanner sc;
-            std::vector<outcome> got;
+            std::vector<std::vector<std::uint8_t>> frames;
             for (std::size_t i = 0; i < stream.size(); i += chunk) {
                 const std::span<const std::uint8_t> part(stream.data() + i, std::min(chunk, stream.size() - i));
-                sc.feed(part, [&](robowire::osp::scanner::frame_bytes f) {
-                    const std::vector<std::uint8_t> frame(f.begin(), f.end());
-                    got.push_back(decode("osp", "", frame, json::object(), what));
-                });
+                sc.feed(part, [&](robowire::osp::scanner::frame_bytes f) { frames.emplace_back(f.begin(), f.end()); });
             }
             const auto& records = v.at("records");
+            std::vector<outcome> got;
+            for (std::size_t i = 0; i < frames.size(); ++i) {
+                const json fields = i < records.size() ? records[i].value("fields", json::object()) : json::object();
+                got.push_back(decode("osp", "", frames[i], fields, what));
+            }
             bool ok = got.size() == records.size();
             for (std::size_t i = 0; ok && i < got.size(); ++i) {
                 const auto& w = records[i];
