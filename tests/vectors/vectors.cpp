@@ -53,7 +53,8 @@ bool element_equals(const E& e, const json& want) {
         return want.is_string() ? robowire::enum_name(e) == want.get<std::string>()
                                 : want.is_number_integer() && want.get<long long>() == static_cast<long long>(e);
     } else if constexpr (std::is_floating_point_v<E>) {
-        return want.is_number() && std::fabs(static_cast<double>(e) - want.get<double>()) <= 1e-9 * std::fabs(want.get<double>());
+        return want.is_number() &&
+               std::fabs(static_cast<double>(e) - want.get<double>()) <= 1e-9 * std::fabs(want.get<double>());
     } else {
         return want.is_number_integer() && want.get<long long>() == static_cast<long long>(e);
     }
@@ -128,9 +129,9 @@ outcome decode(const std::string& protocol, const std::string& direction, const 
         const bool notification = direction == "notification" || (direction.empty() && !in.empty() && in[0] == 0x01);
         const auto encode = [](const auto& v) { return robowire::encode(v); };
         if (notification)
-            return finish<bw::notification>(bw::decode_notification(s), fields, what, encode, [&](const robowire::error& e) {
-                return robowire::describe_error<bw::notification>(e, s, buf);
-            });
+            return finish<bw::notification>(
+                bw::decode_notification(s), fields, what, encode,
+                [&](const robowire::error& e) { return robowire::describe_error<bw::notification>(e, s, buf); });
         return finish<bw::command>(bw::decode_command(s), fields, what, encode, [&](const robowire::error& e) {
             return robowire::describe_error<bw::command>(e, s, buf);
         });
@@ -164,16 +165,19 @@ int main(int argc, char** argv) {
         const std::string what = v.at("protocol").get<std::string>() + " " + v.at("message").get<std::string>();
         const auto in = bytes_of(v.at("hex"));
         const outcome o = decode(v.at("protocol"), str_or_empty(v.at("direction")), in, v.at("fields"), what);
-        check(o.ok && o.message == v.at("message").get<std::string>(), what + ": decodes to " + o.message + " / " + o.line);
+        check(o.ok && o.message == v.at("message").get<std::string>(),
+              what + ": decodes to " + o.message + " / " + o.line);
         check(o.encoded == in, what + ": encodes back to " + v.at("hex").get<std::string>());
     }
 
     for (const auto& v : data.at("errors")) {
         const std::string what = v.at("protocol").get<std::string>() + " error " + v.at("hex").get<std::string>();
-        const outcome o = decode(v.at("protocol"), str_or_empty(v.at("direction")), bytes_of(v.at("hex")), json::object(), what);
+        const outcome o =
+            decode(v.at("protocol"), str_or_empty(v.at("direction")), bytes_of(v.at("hex")), json::object(), what);
         check(!o.ok && robowire::name_of(o.error.code) == v.at("code").get<std::string>(),
               what + ": code " + std::string(robowire::name_of(o.error.code)));
-        check(!o.ok && o.error.offset == v.at("offset").get<unsigned>(), what + ": offset " + std::to_string(o.error.offset));
+        check(!o.ok && o.error.offset == v.at("offset").get<unsigned>(),
+              what + ": offset " + std::to_string(o.error.offset));
         check(o.line == v.at("error").get<std::string>(), what + ": line '" + o.line + "'");
     }
 
@@ -197,10 +201,11 @@ int main(int argc, char** argv) {
             bool ok = got.size() == records.size();
             for (std::size_t i = 0; ok && i < got.size(); ++i) {
                 const auto& w = records[i];
-                ok = w.contains("message") ? got[i].ok && got[i].message == w.at("message").get<std::string>()
-                                           : !got[i].ok && got[i].line == w.at("error").get<std::string>() &&
-                                                 robowire::name_of(got[i].error.code) == w.at("code").get<std::string>() &&
-                                                 got[i].error.offset == w.at("offset").get<unsigned>();
+                ok = w.contains("message")
+                         ? got[i].ok && got[i].message == w.at("message").get<std::string>()
+                         : !got[i].ok && got[i].line == w.at("error").get<std::string>() &&
+                               robowire::name_of(got[i].error.code) == w.at("code").get<std::string>() &&
+                               got[i].error.offset == w.at("offset").get<unsigned>();
             }
             check(ok, what + " in chunks of " + std::to_string(chunk) + ": " + std::to_string(got.size()) + " frames");
         }
@@ -223,13 +228,14 @@ int main(int argc, char** argv) {
         for (const auto& hex : want) {
             const auto in = bytes_of(hex);
             const auto st = r.push(std::span<const std::uint8_t>(in.data(), in.size()));
-            outcomes.push_back(!st ? "error"
+            outcomes.push_back(!st                                ? "error"
                                : *st == nb::reassembly::need_more ? "need_more"
                                : *st == nb::reassembly::complete  ? "complete"
                                                                   : "other");
         }
         check(outcomes == v.at("outcomes").get<std::vector<std::string>>(), what + ": outcomes");
-        check(r.command() == v.at("command").get<unsigned>() && r.text() == text, what + ": text '" + std::string(r.text()) + "'");
+        check(r.command() == v.at("command").get<unsigned>() && r.text() == text,
+              what + ": text '" + std::string(r.text()) + "'");
     }
     for (const auto& v : data.at("navbot_multiframe_errors")) {
         nb::reassembler<nb::max_payload> r;
