@@ -2,7 +2,7 @@
 import pytest
 
 from robowire import DecodeError, EncodeError, navbot, osp
-from vectors import MULTIFRAME, MULTIFRAME_ERRORS, OSP_SCAN
+from vectors import MULTIFRAME, OSP_SCAN, REASSEMBLY
 
 VOLTAGE = bytes.fromhex("FF AA 02 12 D2 04 00 00 55 77")   # 12.34 V
 STATUS = bytes.fromhex("FF AA 02 14 03 05 00 00 55 77")    # charging, low_voltage | overheat
@@ -156,12 +156,17 @@ def test_multiframe_vectors(v):
     assert r.json() == v["text"]
 
 
-@pytest.mark.parametrize("v", MULTIFRAME_ERRORS)
-def test_multiframe_error_vectors(v):
+@pytest.mark.parametrize("v", REASSEMBLY, ids=[v["source"][:40] for v in REASSEMBLY])
+def test_reassembly_vectors(v):
+    """tests/vectors/vectors.json: frame sequences (repeats, restarts, frames lost), the outcome of each frame."""
     r = navbot.Reassembler()
-    frames = [bytes.fromhex(f) for f in v["frames"]]
-    n = len(v["outcomes"])
-    assert [r.push(f)[0] for f in frames[:n]] == v["outcomes"]
-    with pytest.raises(DecodeError) as e:
-        r.push(frames[n])
-    assert (e.value.code, e.value.offset) == (v["code"], v["offset"])
+    for f, want in zip(v["frames"], v["outcomes"], strict=True):
+        if want == "error":
+            with pytest.raises(DecodeError) as e:
+                r.push(bytes.fromhex(f))
+            assert (e.value.code, e.value.offset) == (v["error"]["code"], v["error"]["offset"])
+            continue
+        outcome, message = r.push(bytes.fromhex(f))
+        assert outcome == want
+        if outcome == "complete":
+            assert message["text"] == v["text"]

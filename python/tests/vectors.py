@@ -23,9 +23,9 @@ CASES = [(m["protocol"], m["direction"], m["hex"], m["message"], m["fields"], _v
 
 # decode errors: dicts with protocol, direction, hex, code, offset, field, message, error (the text)
 ERRORS = DATA["errors"]
-# NAVBOT messages of several frames, and frame sequences the reassembler rejects
+# NAVBOT messages of several frames, and frame sequences with what a reassembler says of each frame
 MULTIFRAME = DATA["navbot_multiframe"]
-MULTIFRAME_ERRORS = DATA["navbot_multiframe_errors"]
+REASSEMBLY = DATA["navbot_reassembly"]
 # OSP byte streams with noise and the records a scanner finds in them
 OSP_SCAN = DATA["osp_scan"]
 
