@@ -21,6 +21,9 @@ def _value(v):
 # (protocol, direction, hex frame, message, fields that must match, encode keywords)
 CASES = [(m["protocol"], m["direction"], m["hex"], m["message"], m["fields"], _value(m["encode"])) for m in DATA["messages"]]
 
+# (protocol, hex frame, message, encode keywords): other spellings of a vector's field values
+ENCODE_ALSO = [(m["protocol"], m["hex"], m["message"], _value(kw)) for m in DATA["messages"] for kw in m.get("encode_also", [])]
+
 # decode errors: dicts with protocol, direction, hex, code, offset, field, message, error (the text)
 ERRORS = DATA["errors"]
 # NAVBOT messages of several frames, and frame sequences with what a reassembler says of each frame

@@ -25,8 +25,9 @@ VECTORS_PATH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "v
 with open(VECTORS_PATH, encoding="utf-8") as fh:
     VECTORS = json.load(fh)
 
-def encode_args(fields):
-    """encode's name=value arguments: arrays and records flattened in order, bytes as hex, booleans true/false."""
+def encode_args(fields, hex_ints=False):
+    """encode's name=value arguments: arrays and records flattened in order, bytes as hex, booleans true/false;
+    hex_ints: integers 0 and up as 0x... (the tool reads both)."""
     def flat(v):
         if isinstance(v, dict) and set(v) == {"hex"}:
             return [v["hex"].replace(" ", "")]
@@ -36,6 +37,8 @@ def encode_args(fields):
             return [e for x in v for e in flat(x)]
         if isinstance(v, bool):
             return ["true" if v else "false"]
+        if hex_ints and isinstance(v, int) and v >= 0:
+            return [f"0x{v:X}"]
         return [str(v)]
     return [f"{k}={','.join(flat(v))}" for k, v in fields.items()]
 
@@ -83,6 +86,11 @@ for proto, direction, hexs, message, fields, enc in CASES:
     check(rc == 0 and norm(out.strip()) == norm(hexs), f"encode {message}: {rc} {out!r} {err!r}")
     rc2, out2, _ = run("decode", proto, out.strip(), "--json", *extra)
     check(rc2 == 0 and parse_json(out2).get("message") == message, f"round trip {message}")
+
+# the same values with integers spelled in hex (brake_flags=0x21, angle=0x1234, pu_motors=0x30,...)
+for m in VECTORS["messages"]:
+    rc, out, err = run("encode", m["protocol"], m["message"], *encode_args(m["encode"], hex_ints=True))
+    check(rc == 0 and norm(out.strip()) == norm(m["hex"]), f"encode {m['message']}, hex integers: {rc} {out!r} {err!r}")
 
 # ---- direction: 0x23 with 25 bytes is the notification, 1 byte the command; a wrong --direction says which it is
 rc, out, _ = run("decode", "buwizz3", "23")
