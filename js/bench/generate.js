@@ -1,5 +1,5 @@
 // The other route, for bench.js: JavaScript generated from the tables
-// (`robowire list --json buwizz3`, tools/schema.hpp) -- a straight-line
+// (`robowire list --json buwizz3`, tools/lib/schema.hpp) -- a straight-line
 // DataView decoder and encoder per message, compiled with new Function.
 // Covers the field kinds of the messages benchmarked (integers, f32, arrays,
 // records, an optional block, units, flag bits); text, tails, enums, bools

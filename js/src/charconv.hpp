@@ -1,6 +1,6 @@
 // std::to_chars and std::from_chars for double, which emscripten 3.1.6's
 // libc++ lacks (it has the integer forms only); the command-line tool's JSON
-// writer (tools/emit.hpp) uses them. Forced into each translation unit of the
+// writer (tools/lib/emit.hpp) uses them. Forced into each translation unit of the
 // WebAssembly build (js/build, -include), from printf and strtod (musl:
 // correctly rounded), with the standard's results:
 //   to_chars(f, l, v)                 shortest round-trip digits, fixed or scientific, whichever is shorter (fixed on a

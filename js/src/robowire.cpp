@@ -17,7 +17,7 @@
 
 namespace {
 namespace bw = robowire::buwizz3;
-namespace cli = robowire::cli;
+namespace tools = robowire::tools;
 
 // What a call leaves for JavaScript to read: the JSON line, the frame or the
 // error text in `text`; the error's code name, offset, field and message.
@@ -64,7 +64,7 @@ void layout(std::string& o) {
         first = false;
         o += "{\"name\":\"" + std::string(f.name) + "\",\"count\":" + std::to_string(F::count) +
              ",\"array\":" + (F::is_array ? "true" : "false") + ",\"record\":";
-        if constexpr (F::kind == robowire::wire_kind::record) layout<cli::element_of_t<F>>(o);
+        if constexpr (F::kind == robowire::wire_kind::record) layout<tools::element_of_t<F>>(o);
         else o += "null";
         o += '}';
     });
@@ -102,14 +102,14 @@ std::uint8_t* rw_input(std::size_t size) {
 // Decodes in[0..size); direction 0 any, 1 command, 2 notification.
 // Returns 0 (text: the JSON line), 1 (bad input) or 2 (ambiguous direction).
 int rw_buwizz3_decode(const std::uint8_t* in, std::size_t size, int direction) {
-    static cli::output out(cli::format_kind::json, false);
+    static tools::output out(tools::format_kind::json, false);
     last = result{};
     const std::span<const std::uint8_t> bytes(in, size);
-    const auto d = direction == 1   ? cli::direction::command
-                   : direction == 2 ? cli::direction::notification
-                                    : cli::direction::any;
-    const cli::outcome o = cli::buwizz3_protocol().decode(bytes, d, out, cli::record_meta{});
-    if (o.status == cli::exit_ok) {
+    const auto d = direction == 1   ? tools::direction::command
+                   : direction == 2 ? tools::direction::notification
+                                    : tools::direction::any;
+    const tools::outcome o = tools::buwizz3_protocol().decode(bytes, d, out, tools::record_meta{});
+    if (o.status == tools::exit_ok) {
         last.text.assign(out.buf.view());
         out.buf.clear();
         if (!last.text.empty() && last.text.back() == '\n') last.text.pop_back();
@@ -117,10 +117,10 @@ int rw_buwizz3_decode(const std::uint8_t* in, std::size_t size, int direction) {
     }
     out.buf.clear();
     last.text = o.error;
-    if (size > 0 && o.status == cli::exit_bad_input) {
-        const bool cmd = d == cli::direction::command || (d == cli::direction::any && uses<bw::command>(in[0]));
+    if (size > 0 && o.status == tools::exit_bad_input) {
+        const bool cmd = d == tools::direction::command || (d == tools::direction::any && uses<bw::command>(in[0]));
         const bool note =
-            d == cli::direction::notification || (d == cli::direction::any && uses<bw::notification>(in[0]));
+            d == tools::direction::notification || (d == tools::direction::any && uses<bw::notification>(in[0]));
         if (cmd && !note) {
             if (const auto r = bw::decode_command(bytes); !r) error_of<bw::command>(bytes, r.error());
         } else if (note && !cmd) {
@@ -149,8 +149,8 @@ int rw_buwizz3_encode(const char* message, const char* pairs) {
         values.emplace_back(line.substr(0, eq), eq == std::string::npos ? std::string() : line.substr(eq + 1));
         p = *end ? end + 1 : end;
     }
-    cli::outcome o = cli::buwizz3_encode(message, values);
-    if (o.status != cli::exit_ok) {
+    tools::outcome o = tools::buwizz3_encode(message, values);
+    if (o.status != tools::exit_ok) {
         last.text = o.error;
         last.message = o.message;
         last.code = o.code;  // the library's error, when the encoder refused a value
