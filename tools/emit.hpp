@@ -298,6 +298,11 @@ inline void put_json_double(buffer& o, double v, int precision = 17) {
 }
 // JSON's physical value: put_json_double(raw x scale + offset, 15).
 inline void put_physical_json(buffer& o, std::int64_t raw, double scale, double offset) {
+    if (scale == 1.0 && offset == 0.0 && raw > -1'000'000'000'000'000 && raw < 1'000'000'000'000'000) {
+        put_int(o, raw);  // raw x 1 + 0: a whole number, written exactly (not -0: 0 x 1 + 0 is +0)
+        o += ".0";
+        return;
+    }
     decimal x;
     if (!physical_decimal(raw, scale, offset, x))
         return put_json_double(o, static_cast<double>(raw) * scale + offset, 15);
@@ -346,6 +351,19 @@ void put_physical_key(Out& o, std::string_view key) {
     if (key.size() > raw.size() && key.substr(key.size() - raw.size()) == raw) o.append(key.substr(0, key.size() - 4));
     else o.append(key).append("_physical");
 }
+
+// No unit name of M's fields needs JSON escaping (decided at compile time).
+template <class M>
+inline constexpr bool plain_units_v = [] {
+    bool plain = true;
+    robowire::for_each_field<M>([&](const auto& f) {
+        for (const char c : f.unit.name) {
+            const auto u = static_cast<unsigned char>(c);
+            if (u < 0x20 || u >= 0x7F || c == '"' || c == '\\') plain = false;
+        }
+    });
+    return plain;
+}();
 
 // The NAVBOT JSON payload as text (up to its first zero byte), for frames of the JSON command.
 template <class M>
@@ -677,9 +695,13 @@ void write_json_object(buffer& o, const M& m) {
                 } else {
                     put_physical_json(o, static_cast<std::int64_t>(v), f.unit.scale, f.unit.offset);
                 }
-                o.append(",\"unit\":");
-                put_json_string(o, f.unit.name);
-                o += '}';
+                if constexpr (plain_units_v<M>) {
+                    o.append(",\"unit\":\"").append(f.unit.name).append("\"}");
+                } else {
+                    o.append(",\"unit\":");
+                    put_json_string(o, f.unit.name);
+                    o += '}';
+                }
             }
             if constexpr (!F::is_array) put_json_bits<M>(o, f, static_cast<unsigned>(v));
         }

@@ -10,6 +10,8 @@
 
 #include "emit.hpp"
 
+static_assert(robowire::cli::emit::plain_units_v<robowire::buwizz3::status>);
+
 using namespace robowire::cli;
 
 int main() {
@@ -104,6 +106,11 @@ int main() {
         std::uniform_int_distribution<std::int64_t> ri(-(std::int64_t{1} << 31), (std::int64_t{1} << 32) - 1);
         for (int i = 0; i < 100000; ++i) physical(ri(rng), sc, 0.0);
     }
+    // scale 1 (whole numbers), up to where %.15g turns to exponents
+    for (std::int64_t r = -100000; r <= 100000; ++r) physical(r, 1.0, 0.0);
+    for (const std::int64_t r : {std::int64_t{999'999'999'999'999}, std::int64_t{1'000'000'000'000'000},
+                                 std::int64_t{1} << 53, std::int64_t{2147483647}})
+        for (const std::int64_t s : {1, -1}) physical(s * r, 1.0, 0.0);
     // exact ties at 6 digits (1000000.5, 0.1234565): the double's side decides
     for (const std::int64_t r : {2000001, 1234565, 1234575, 9999995, 19999990})
         for (const double sc : {0.5, 0.1, 1e-7, 0.05}) physical(r, sc, 0.0);
