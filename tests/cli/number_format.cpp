@@ -1,13 +1,16 @@
 // The tool's fast number formatting (tools/lib/emit.hpp: %g from the shortest
 // round-trip digits, whole numbers as integers) against the exact form
 // (std::to_chars with the precision, printf's %g): physical values of the
-// tables' scales over wide raw ranges, random doubles, random bit patterns.
+// tables' scales over wide raw ranges, random doubles, random bit patterns,
+// and physical values written from their raw integers.
 // Prints the first differences; exits 1 on any.
 #include <cstdio>
 #include <cstring>
 #include <random>
 
 #include "emit.hpp"
+
+static_assert(robowire::tools::emit::plain_units_v<robowire::buwizz3::status>);
 
 using namespace robowire::tools;
 
@@ -67,12 +70,50 @@ int main() {
     std::uniform_real_distribution<float> uf(-1e4f, 1e4f);
     for (int i = 0; i < 300000; ++i) check(static_cast<double>(uf(rng)));
     for (int i = -200000; i <= 200000; ++i) check(static_cast<double>(static_cast<float>(i) / 64.0f));
-    for (const double v : {1e6, 1e7, 1e14, 123e5, 0.001, 0.0015, 0.00015, 1e-7, 1.5e-7, 2e21, 1e100,
-                           0.5, -2.5, 12.75})
+    for (const double v : {1e6, 1e7, 1e14, 123e5, 0.001, 0.0015, 0.00015, 1e-7, 1.5e-7, 2e21, 1e100, 0.5, -2.5, 12.75})
         check(v);
     for (const double v : {0.0, -0.0, 1e15, 1e16, 999999.5, 9.9999995, 0.0001, 0.00001, 123456789012345678.0, 5e-324,
                            1.7976931348623157e308})
         check(v);
+    // physical values from integers (put_physical_g, put_physical_json) against the exact forms of the
+    // double raw x scale + offset: short decimal scales, others, offsets, ties at 6 digits, wide raws
+    auto physical = [&](std::int64_t raw, double scale, double offset) {
+        const double v = static_cast<double>(raw) * scale + offset;
+        buffer a, b, j, g;
+        emit::put_physical_g(a, raw, scale, offset, 6);
+        emit::put_g_exact(b, emit::tidy(v), 6);
+        if (text(a) != text(b) && bad++ < 10)
+            std::printf("%%.6g of %lld x %.17g + %g: %s, expected %s\n", static_cast<long long>(raw), scale, offset,
+                        text(a).c_str(), text(b).c_str());
+        emit::put_physical_json(j, raw, scale, offset);
+        emit::put_g_exact(g, v, 15);
+        std::string jwant = text(g);
+        if (jwant.find_first_of(".e") == std::string::npos) jwant += ".0";
+        if (text(j) != jwant && bad++ < 10)
+            std::printf("JSON value of %lld x %.17g + %g: %s, expected %s\n", static_cast<long long>(raw), scale,
+                        offset, text(j).c_str(), jwant.c_str());
+        ++n;
+    };
+    const double physical_scales[] = {0.015,  0.488, 0.1, 0.01,  0.05,        100.0 / 127, 0.5,
+                                      0.0625, 0.001, 3.3, -0.25, 1e-9,        0.0001,      123.4,
+                                      2.5e-5, 7,     -1,  0.3,   0.123456789, 1234567.891, -2.718281};
+    for (const double sc : physical_scales) {
+        for (std::int64_t r = -100000; r <= 100000; ++r) physical(r, sc, (r % 3 == 0) ? 9.0 : 0.0);
+        for (std::int64_t r = 1; r < (std::int64_t{1} << 32); r = r * 3 + 1) {
+            physical(r, sc, 0.0);
+            physical(-r, sc, 0.0);
+        }
+        std::uniform_int_distribution<std::int64_t> ri(-(std::int64_t{1} << 31), (std::int64_t{1} << 32) - 1);
+        for (int i = 0; i < 100000; ++i) physical(ri(rng), sc, 0.0);
+    }
+    // scale 1 (whole numbers), up to where %.15g turns to exponents
+    for (std::int64_t r = -100000; r <= 100000; ++r) physical(r, 1.0, 0.0);
+    for (const std::int64_t r : {std::int64_t{999'999'999'999'999}, std::int64_t{1'000'000'000'000'000},
+                                 std::int64_t{1} << 53, std::int64_t{2147483647}})
+        for (const std::int64_t s : {1, -1}) physical(s * r, 1.0, 0.0);
+    // exact ties at 6 digits (1000000.5, 0.1234565): the double's side decides
+    for (const std::int64_t r : {2000001, 1234565, 1234575, 9999995, 19999990})
+        for (const double sc : {0.5, 0.1, 1e-7, 0.05}) physical(r, sc, 0.0);
     std::printf("%ld values, %ld differ\n", n, bad);
     return bad != 0;
 }

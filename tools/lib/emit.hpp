@@ -166,6 +166,73 @@ inline void put_g_tidy(buffer& o, double v, int p2) {
 }
 // printf's %.6g (text output)
 inline void put_g6(buffer& o, double v) { put_g(o, v, 6); }
+// ---- physical values (raw x scale + offset) from integers: when the scale
+// is a short decimal m / 10^k (|m| < 2^31, k <= 9, the double nearest to it)
+// and the offset 0, the decimal raw x m / 10^k of at most 15 digits is what
+// rounding the double product to 15 significant digits gives (the product is
+// within 2.3e-16 of it, relative; half a unit of its 15th digit is at least
+// 5e-16): %.15g writes it, and tidy() reads it back.
+inline bool scale_decimal(double scale, std::int64_t& m, int& k) {
+    static constexpr double pow10[] = {1, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9};
+    for (k = 0; k < 10; ++k) {
+        const double t = scale * pow10[k];
+        if (!(std::fabs(t) < 2147483648.0)) return false;
+        m = static_cast<std::int64_t>(t < 0 ? t - 0.5 : t + 0.5);
+        if (static_cast<double>(m) / pow10[k] == scale) return m != 0;
+    }
+    return false;
+}
+// raw x scale + offset as that exact decimal; false when it is not one (or zero: its sign is the double's).
+inline bool physical_decimal(std::int64_t raw, double scale, double offset, decimal& x) {
+    std::int64_t m;
+    int k;
+    if (offset != 0.0 || raw == 0 || raw <= -(std::int64_t{1} << 32) || raw >= (std::int64_t{1} << 32) ||
+        !scale_decimal(scale, m, k))
+        return false;
+    const std::int64_t p = raw * m;
+    std::uint64_t u = p < 0 ? 0 - static_cast<std::uint64_t>(p) : static_cast<std::uint64_t>(p);
+    if (u >= 1'000'000'000'000'000u) return false;
+    char b[24];
+    int n = 0;
+    do {
+        b[n++] = static_cast<char>('0' + u % 10);
+        u /= 10;
+    } while (u);
+    x.neg = p < 0;
+    x.exp = n - 1 - k;
+    int lo = 0;
+    while (b[lo] == '0') ++lo;  // trailing zeros
+    x.n = n - lo;
+    for (int i = 0; i < x.n; ++i) x.d[i] = b[n - 1 - i];
+    return true;
+}
+// Rounds the exact decimal x to p significant digits (half away from zero, as
+// printf rounds any double near x); false on an exact tie, which the double's
+// side of x decides.
+inline bool round_exact(decimal& x, int p) {
+    if (x.n <= p) return true;
+    if (x.d[p] == '5' && x.n == p + 1) return false;
+    const bool up = x.d[p] >= '5';
+    x.n = p;
+    if (up) {
+        int i = p - 1;
+        while (i >= 0 && x.d[i] == '9') x.d[i--] = '0';
+        if (i < 0) {
+            x.d[0] = '1';
+            ++x.exp;
+        } else {
+            ++x.d[i];
+        }
+    }
+    while (x.n > 1 && x.d[x.n - 1] == '0') --x.n;
+    return true;
+}
+// The text's physical value: %.<p>g of tidy(raw x scale + offset), as put_g_tidy writes it.
+inline void put_physical_g(buffer& o, std::int64_t raw, double scale, double offset, int p) {
+    decimal x;
+    if (physical_decimal(raw, scale, offset, x) && round_exact(x, p)) return put_g(o, x, p);
+    put_g_tidy(o, static_cast<double>(raw) * scale + offset, p);
+}
 // x as std::to_chars(double) writes its shortest digits: fixed, or scientific when that is shorter.
 inline void put_to_chars_form(buffer& o, const decimal& x) {
     if (x.neg) o += '-';
@@ -229,6 +296,19 @@ inline void put_json_double(buffer& o, double v, int precision = 17) {
         if (c == '.' || c == 'e') return;
     o += ".0";
 }
+// JSON's physical value: put_json_double(raw x scale + offset, 15).
+inline void put_physical_json(buffer& o, std::int64_t raw, double scale, double offset) {
+    if (scale == 1.0 && offset == 0.0 && raw > -1'000'000'000'000'000 && raw < 1'000'000'000'000'000) {
+        put_int(o, raw);  // raw x 1 + 0: a whole number, written exactly (not -0: 0 x 1 + 0 is +0)
+        o += ".0";
+        return;
+    }
+    decimal x;
+    if (!physical_decimal(raw, scale, offset, x))
+        return put_json_double(o, static_cast<double>(raw) * scale + offset, 15);
+    put_g(o, x, 15);
+    if (x.exp >= -4 && x.exp < 15 && x.n <= x.exp + 1) o += ".0";  // a whole number
+}
 // Rounded to 15 significant digits (13.000000000000002 -> 13): physical values.
 inline double tidy(double v) {
     char b[48];
@@ -272,6 +352,19 @@ void put_physical_key(Out& o, std::string_view key) {
     else o.append(key).append("_physical");
 }
 
+// No unit name of M's fields needs JSON escaping (decided at compile time).
+template <class M>
+inline constexpr bool plain_units_v = [] {
+    bool plain = true;
+    robowire::for_each_field<M>([&](const auto& f) {
+        for (const char c : f.unit.name) {
+            const auto u = static_cast<unsigned char>(c);
+            if (u < 0x20 || u >= 0x7F || c == '"' || c == '\\') plain = false;
+        }
+    });
+    return plain;
+}();
+
 // The NAVBOT JSON payload as text (up to its first zero byte), for frames of the JSON command.
 template <class M>
 bool payload_text(const M& m, std::string_view field, std::string& text) {
@@ -305,7 +398,7 @@ void text_value(buffer& o, const F& f, const E& v) {
         if (!f.unit.name.empty()) {
             if (f.unit.scale != 1.0 || f.unit.offset != 0.0) {
                 o += " (";
-                put_g_tidy(o, physical_of(f, i), 6);
+                put_physical_g(o, i, f.unit.scale, f.unit.offset, 6);
                 o.append(" ").append(f.unit.name).append(")");
             } else {
                 o.append(" ").append(f.unit.name);
@@ -380,15 +473,18 @@ struct path_buf {
 };
 
 // Calls row(path, write_value) for each text row of m, in order; write_value(o) appends the row's value.
-template <class M, class Row>
+// Paths false: the path stays empty (rows whose heads are known).
+template <bool Paths = true, class M, class Row>
 void for_each_row(const M& m, path_buf& p, Row& row) {
     robowire::for_each_field<M>([&](const auto& f) {
         using F = std::remove_cvref_t<decltype(f)>;
         const std::size_t mark = p.n;
-        if (mark) p.push(".");
-        p.push(f.name);
+        if constexpr (Paths) {
+            if (mark) p.push(".");
+            p.push(f.name);
+        }
         auto element = [&](const auto& e) {
-            if constexpr (F::kind == wire_kind::record) for_each_row(e, p, row);
+            if constexpr (F::kind == wire_kind::record) for_each_row<Paths>(e, p, row);
             else row(p.view(), [&](buffer& o) { text_value<M>(o, f, e); });
         };
         auto value = [&](const auto& v) {
@@ -398,7 +494,7 @@ void for_each_row(const M& m, path_buf& p, Row& row) {
                 } else {
                     for (std::size_t i = 0; i < v.size(); ++i) {
                         const std::size_t at = p.n;
-                        p.push_index(i);
+                        if constexpr (Paths) p.push_index(i);
                         element(v[i]);
                         p.n = at;
                     }
@@ -418,7 +514,7 @@ void for_each_row(const M& m, path_buf& p, Row& row) {
         if constexpr (std::is_same_v<M, robowire::navbot::frame>) p.varies = true;
         if (payload_text(m, f.name, text)) {
             const std::size_t at = p.n;
-            p.push(" (text)");
+            if constexpr (Paths) p.push(" (text)");
             row(p.view(), [&](buffer& o) { o += text; });
             p.n = at;
         }
@@ -483,7 +579,7 @@ void write_text(buffer& o, std::string_view protocol, const M& m, const std::vec
             o += '\n';
         };
         path_buf p;
-        for_each_row(m, p, write);
+        for_each_row<false>(m, p, write);
     } else {
         std::size_t w = 0;
         path_buf p;
@@ -593,15 +689,19 @@ void write_json_object(buffer& o, const M& m) {
                     o += '[';
                     for (std::size_t i = 0; i < v.size(); ++i) {
                         if (i) o += ',';
-                        put_json_double(o, physical_of(f, static_cast<std::int64_t>(v[i])), 15);
+                        put_physical_json(o, static_cast<std::int64_t>(v[i]), f.unit.scale, f.unit.offset);
                     }
                     o += ']';
                 } else {
-                    put_json_double(o, physical_of(f, static_cast<std::int64_t>(v)), 15);
+                    put_physical_json(o, static_cast<std::int64_t>(v), f.unit.scale, f.unit.offset);
                 }
-                o.append(",\"unit\":");
-                put_json_string(o, f.unit.name);
-                o += '}';
+                if constexpr (plain_units_v<M>) {
+                    o.append(",\"unit\":\"").append(f.unit.name).append("\"}");
+                } else {
+                    o.append(",\"unit\":");
+                    put_json_string(o, f.unit.name);
+                    o += '}';
+                }
             }
             if constexpr (!F::is_array) put_json_bits<M>(o, f, static_cast<unsigned>(v));
         }
