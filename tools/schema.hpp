@@ -206,7 +206,7 @@ inline json output_rules() {
          "raw * scale + offset in double, rounded to 15 significant digits; key \"physical\", "
          "{\"value\": v or [v...], \"unit\": name}"},
         {"flag_bits", "\"<field>_bits\": {name: true/false (width 1) or values[v] (else the number as text)}"},
-        {"bytes", "tail fields: lower-case hex text, no spaces"},
+        {"bytes", "tail fields: upper-case hex text, a space between bytes (\"0B 0C\")"},
         {"error_line",
          "<message>[.<field>]: <text>[ (<lengths>)][ (valid <min>..<max>[ <unit>| raw])] at byte <offset>; "
          "the field: the first top-level field whose bytes hold the offset (none for too_short and too_long); "

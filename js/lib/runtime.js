@@ -1,0 +1,193 @@
+// What the generated codecs (buwizz3.js, navbot.js, osp.js) share: the
+// error class, error lines, hex text and number printing. Hand-written.
+
+// A message that cannot be decoded or encoded. `message`: the command-line
+// tool's error line; `code`: the error code's name ("value_out_of_range"; null
+// for a usage error); `offset`: the byte; `field`: the field at that byte or
+// null; `messageName`: the message it was read or written as, or null.
+export class RobowireError extends Error {
+  constructor(text, { code = null, offset = null, field = null, messageName = null } = {}) {
+    super(text);
+    this.name = 'RobowireError';
+    this.code = code;
+    this.offset = offset;
+    this.field = field;
+    this.messageName = messageName;
+  }
+}
+
+const HEX = Array.from({ length: 256 }, (_, i) => i.toString(16).toUpperCase().padStart(2, '0'));
+// Upper-case hex, a space between bytes (tail fields): "0B 0C 0D".
+export function hex(b, from = 0, to = b.length) {
+  const parts = [];
+  for (let i = from; i < to; ++i) parts.push(HEX[b[i]]);
+  return parts.join(' ');
+}
+// A physical value: rounded to 15 significant digits (13.000000000000002 -> 13).
+export function tidy(v) {
+  return Number.isFinite(v) ? Number(v.toPrecision(15)) : null;
+}
+// An f32 value: the float as is; NaN and infinity: null.
+export function f32(dv, o) {
+  const v = dv.getFloat32(o, true);
+  return Number.isFinite(v) ? v : null;
+}
+const utf8 = new TextDecoder('utf-8');
+// Text of bytes [from, to) (invalid UTF-8: U+FFFD).
+export function text(b, from, to) {
+  return utf8.decode(b.subarray(from, to));
+}
+// Bytes as a Uint8Array over the same memory.
+export function bytesOf(x) {
+  if (x instanceof Uint8Array) return x;
+  if (x instanceof ArrayBuffer) return new Uint8Array(x);
+  if (ArrayBuffer.isView(x)) return new Uint8Array(x.buffer, x.byteOffset, x.byteLength);
+  throw new TypeError('decode: bytes must be a Uint8Array, ArrayBuffer or DataView');
+}
+
+// An error of message `m` (its generated info: name, lengths text, fields as
+// [offset, end, name, ranged, min, max, unit suffix]) at byte `offset`.
+export class Fail {
+  constructor(code, offset) {
+    this.code = code;
+    this.offset = offset;
+  }
+}
+export function fail(code, offset) {
+  throw new Fail(code, offset);
+}
+export function messageError(errors, m, code, offset) {
+  const length = code === 'too_short' || code === 'too_long';
+  let f = null;
+  for (const x of m.fields) {
+    if (x[0] === x[1] ? offset === x[0] : offset >= x[0] && offset < x[1]) {
+      f = x;
+      break;
+    }
+  }
+  let line = m.name;
+  if (f && !length) line += `.${f[2]}`;
+  line += `: ${errors[code]}`;
+  if (length || code === 'bad_length') line += ` (${m.lengths})`;
+  if (f && f[3] && code === 'value_out_of_range') line += ` (valid ${f[4]}..${f[5]}${f[6]})`;
+  line += ` at byte ${offset}`;
+  return new RobowireError(line, { code, offset, field: f && !length ? f[2] : null, messageName: m.name });
+}
+export function keyError(errors, key, code, offset) {
+  let line = 'unknown key';
+  for (const k of key) line += ` 0x${k.toString(16).toUpperCase().padStart(2, '0')}`;
+  if (code !== 'unknown_message') line += `: ${errors[code]}`;
+  return new RobowireError(`${line} at byte ${offset}`, { code, offset });
+}
+export function plainError(errors, code, offset) {
+  return new RobowireError(`${errors[code]} at byte ${offset}`, { code, offset });
+}
+
+// ---- encode, from a message's table (generated ENC entries)
+const utf8out = new TextEncoder();
+const setters = { u16le: 'setUint16', i16le: 'setInt16', u32le: 'setUint32', i32le: 'setInt32', f32le: 'setFloat32' };
+function derivedKey(k, fields) {
+  return fields.some((f) => f.physical === k || `${f.name}_bits` === k || `${f.name}_text` === k);
+}
+function put(ctx, f, v, o, path) {
+  const { out, dv } = ctx;
+  const bad = (code) => { throw Object.assign(messageError(ctx.E, ctx.info, code, o), { field: path }); };
+  if (f.type === 'record') return putRecord(ctx, f.record, v ?? {}, o, path);
+  if (f.type === 'text') {
+    if (v === undefined || v === null) v = '';
+    if (typeof v !== 'string') throw new TypeError(`encode: ${path}: text expected`);
+    const t = utf8out.encode(v);
+    if (t.length > f.capacity || t.includes(0)) bad('value_out_of_range');
+    out.set(t, o);
+    return;
+  }
+  if (f.type === 'tail') return;  // written by encodeMessage (it sets the length)
+  if (f.type === 'f32le') {
+    dv.setFloat32(o, v === undefined || v === null ? NaN : Number(v), true);
+    if (v === undefined) dv.setFloat32(o, 0, true);
+    return;
+  }
+  let raw;
+  if (v === undefined) raw = f.enum ? Object.values(f.enum)[0] ?? 0 : 0;
+  else if (typeof v === 'boolean') raw = v ? 1 : 0;
+  else if (typeof v === 'string' && f.enum) {
+    raw = f.enum[v];
+    if (raw === undefined) bad('invalid_enum');
+  } else raw = Number(v);
+  if (!Number.isInteger(raw)) throw new TypeError(`encode: ${path}: an integer expected, not ${String(v)}`);
+  if (f.enum) {
+    if (!Object.values(f.enum).includes(raw)) bad('invalid_enum');
+  } else if (f.valid && (raw < f.valid.min || raw > f.valid.max)) {
+    bad('value_out_of_range');
+  }
+  if (f.type === 'bits') {
+    const m = ((1 << f.bits.width) - 1) << f.bits.lo;
+    out[o] = (out[o] & ~m) | ((raw << f.bits.lo) & m);
+  } else if (f.element_size === 1) {
+    out[o] = raw & 0xff;
+  } else {
+    dv[setters[f.type]](o, raw, true);
+  }
+}
+function putRecord(ctx, fields, obj, base, path) {
+  if (obj === null || typeof obj !== 'object' || Array.isArray(obj)) throw new TypeError(`encode: ${path}: an object expected`);
+  for (const k of Object.keys(obj))
+    if (!fields.some((f) => f.name === k) && !derivedKey(k, fields))
+      throw new RobowireError(`unknown field ${path ? `${path}.` : ''}${k} (fields: ${fields.map((f) => f.name).join(', ')})`,
+        { messageName: ctx.info.name });
+  for (const f of fields) {
+    const v = obj[f.name];
+    const o = base + f.offset;
+    const p = path ? `${path}.${f.name}` : f.name;
+    if (f.optional && (v === undefined || v === null)) continue;
+    if (f.array) {
+      const a = v ?? [];
+      if (!Array.isArray(a) && !(a instanceof Uint8Array)) throw new TypeError(`encode: ${p}: an array of ${f.count} expected`);
+      if (v !== undefined && a.length !== f.count)
+        throw new RobowireError(`${p}: ${a.length} values given, ${f.count} expected${path ? '' : ` (${p}=v1,...,v${f.count})`}`, { messageName: ctx.info.name, field: p });
+      for (let i = 0; i < f.count; ++i) put(ctx, f, a[i], o + i * f.element_size, `${p}[${i}]`);
+    } else {
+      put(ctx, f, v, o, p);
+    }
+  }
+}
+function tailBytes(v) {
+  if (v === undefined || v === null) return new Uint8Array(0);
+  if (typeof v === 'string') {
+    const s = v.replace(/\s+/g, '');
+    if (!/^([0-9a-fA-F]{2})*$/.test(s)) throw new TypeError('encode: bytes as hex text expected');
+    return Uint8Array.from(s.match(/../g) ?? [], (x) => parseInt(x, 16));
+  }
+  return Uint8Array.from(v);
+}
+export function encodeMessage(E, protocol, table, infos, message, fields = {}) {
+  if (message !== null && typeof message === 'object') {  // what decode returns
+    if (message.protocol !== undefined && message.protocol !== protocol)
+      throw new RobowireError(`encode: a ${message.protocol} message, not ${protocol}`);
+    fields = message.fields ?? {};
+    message = message.message;
+  }
+  if (typeof message !== 'string') throw new TypeError('encode: message must be a name (string)');
+  if (fields === null || typeof fields !== 'object') throw new TypeError('encode: fields must be an object');
+  const i = table.findIndex((m) => m.name === message);
+  if (i < 0) throw new RobowireError(`unknown message ${message} (robowire list ${protocol})`);
+  const m = table[i];
+  let size = m.min_size;
+  let tail = null;
+  for (const f of m.fields) {
+    const v = fields[f.name];
+    if (f.optional && v !== undefined && v !== null) size = Math.max(size, f.offset + f.size);
+    if (f.type === 'tail') {
+      tail = [f, tailBytes(v)];
+      if (tail[1].length > f.capacity)
+        throw messageError(E, infos[i], 'too_long', f.offset + f.capacity);
+      size = Math.max(size, f.offset + tail[1].length);
+    }
+  }
+  const out = new Uint8Array(size);
+  const ctx = { out, dv: new DataView(out.buffer), E, info: infos[i] };
+  for (const [o, v] of m.fixed) if (o < size) out[o] = v;
+  putRecord(ctx, m.fields, fields, 0, '');
+  if (tail) out.set(tail[1], tail[0].offset);
+  return out;
+}
