@@ -18,4 +18,4 @@ export const buwizz3 = Object.freeze({ decode: buwizz3Codec.decode, encode: buwi
 // NAVBOT-ES02: one 20-byte frame at a time.
 export const navbot = Object.freeze({ decode: navbotCodec.decode, encode: navbotCodec.encode });
 // OSP: one 10-byte frame at a time.
-export const osp = Object.freeze({ decode: ospCodec.decode, encode: ospCodec.encode });
+export const osp = Object.freeze({ decode: ospCodec.decode, encode: ospCodec.encode, Scanner: ospCodec.Scanner });

@@ -191,3 +191,66 @@ export function encodeMessage(E, protocol, table, infos, message, fields = {}) {
   if (tail) out.set(tail[1], tail[0].offset);
   return out;
 }
+
+// ---- serial streams: frames found in a byte stream (OSP's scanner)
+// A frame: `size` bytes with fixed bytes [[offset, value]...], the first at 0.
+// A candidate that breaks a fixed byte is dropped up to the next start byte.
+export class FrameScanner {
+  constructor(size, fixed, decode, protocol) {
+    this.size = size;
+    this.fixed = fixed;
+    this.decodeFrame = decode;
+    this.protocol = protocol;
+    this.buf = new Uint8Array(size);
+    this.len = 0;
+    this.counters = { frames: 0, skipped_bytes: 0, false_starts: 0 };
+  }
+  partialOk() {
+    for (const [o, v] of this.fixed) if (o < this.len && this.buf[o] !== v) return false;
+    return true;
+  }
+  resync() {
+    const start = this.fixed[0][1];
+    for (;;) {
+      ++this.counters.false_starts;
+      let from = 1;
+      while (from < this.len && this.buf[from] !== start) ++from;
+      this.counters.skipped_bytes += from;
+      this.buf.copyWithin(0, from, this.len);
+      this.len -= from;
+      if (this.partialOk()) return;
+    }
+  }
+  // Feeds bytes; returns the records of the frames they complete: decoded
+  // messages, or {type:'error', error, protocol, bytes} (as `robowire scan`).
+  push(bytes) {
+    const b = bytesOf(bytes);
+    const out = [];
+    const start = this.fixed[0][1];
+    for (let i = 0; i < b.length; ++i) {
+      const x = b[i];
+      if (this.len === 0) {
+        if (x === start) this.buf[this.len++] = x;
+        else ++this.counters.skipped_bytes;
+        continue;
+      }
+      const k = this.len++;
+      this.buf[k] = x;
+      const f = this.fixed.find(([o]) => o === k);
+      if (f && f[1] !== x) {
+        this.resync();
+      } else if (k === this.size - 1) {
+        this.len = 0;
+        ++this.counters.frames;
+        const frame = this.buf.slice();
+        try {
+          out.push(this.decodeFrame(frame));
+        } catch (e) {
+          if (!(e instanceof RobowireError)) throw e;
+          out.push({ type: 'error', error: e.message, protocol: this.protocol, bytes: hex(frame) });
+        }
+      }
+    }
+    return out;
+  }
+}
