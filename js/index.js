@@ -16,6 +16,11 @@ export const schema = schemaDocument;
 // device), "notification" (device to host) or absent (the command byte decides).
 export const buwizz3 = Object.freeze({ decode: buwizz3Codec.decode, encode: buwizz3Codec.encode });
 // NAVBOT-ES02: one 20-byte frame at a time.
-export const navbot = Object.freeze({ decode: navbotCodec.decode, encode: navbotCodec.encode });
-// OSP: one 10-byte frame at a time.
+export const navbot = Object.freeze({
+  decode: navbotCodec.decode,
+  encode: navbotCodec.encode,
+  Reassembler: navbotCodec.Reassembler,  // new Reassembler().push(frame) -> records, .counters
+  fragment: navbotCodec.fragment,  // fragment(message, fields) or fragment(bytes or text) -> 20-byte frames
+});
+// OSP: one 10-byte frame at a time; new Scanner().push(bytes) -> records, .counters.
 export const osp = Object.freeze({ decode: ospCodec.decode, encode: ospCodec.encode, Scanner: ospCodec.Scanner });

@@ -254,3 +254,187 @@ export class FrameScanner {
     return out;
   }
 }
+
+// ---- messages over several fixed-size frames (NAVBOT): the library's
+// reassembler (navbot/multiframe.hpp) and what `robowire scan` says of each frame.
+const outcomeText = {
+  need_more: 'part of a message, more frames to come',
+  complete: 'message complete',
+};
+// The frame layout: command, remaining and payload offsets, payload size.
+export class FrameReassembler {
+  constructor(layout, decode, decodeFrame, protocol, errors) {
+    Object.assign(this, { layout, decodeMessage: decode, decodeFrame, protocol, errors });
+    this.buf = [];
+    this.state = 'idle';
+    this.last = null;  // the last frame of a multi-frame message: [command, remaining, payload hex]
+    this.lastRemaining = 0;
+    this.command = 0;
+    this.skipping = false;
+    this.skipCommand = 0;
+    this.pushes = 0;
+    this.lines = [];  // frames (push numbers) of the message in progress
+    this.seenRemaining = 0;
+    this.counters = { messages_reassembled: 0, duplicates: 0, restarted: 0, discarded: 0, reassembly_errors: 0 };
+  }
+  // Pushes one frame; returns its records as `robowire scan navbot --json`
+  // prints them ("line": the frame's number, from 1): the decoded message or
+  // its error, then what reassembly says of it (none for a one-frame message).
+  push(bytes) {
+    const b = bytesOf(bytes);
+    const line = ++this.pushes;
+    const out = [];
+    try {
+      out.push(this.decodeMessage(b));
+    } catch (e) {
+      if (!(e instanceof RobowireError)) throw e;
+      const h = hex(b);
+      out.push({ type: 'error', error: e.message, protocol: this.protocol,
+        bytes: h.length > 200 ? `${h.slice(0, 200)} ... (${h.length} characters)` : h });
+    }
+    let f;
+    try {
+      f = this.decodeFrame(b);
+    } catch (e) {
+      if (!(e instanceof RobowireError)) throw e;
+      return out;
+    }
+    const { command: co, remaining: ro, payload: po, payload_size: ps } = this.layout;
+    const frame = { command: b[co], remaining: b[ro], payload: b.slice(po, po + ps) };
+    const r = this.step(frame);
+    const before = this.seenRemaining;
+    this.seenRemaining = frame.remaining;
+    const rec = { type: 'reassembly' };
+    if (typeof r !== 'string') {
+      ++this.counters.reassembly_errors;
+      let dropped = '';
+      if (this.lines.length)
+        dropped = `; the partial message (line${this.lines.length > 1 ? 's ' : ' '}${this.lines[0]}${this.lines.length > 1 ? `-${this.lines[this.lines.length - 1]}` : ''}) is dropped`;
+      this.lines = [];
+      if (frame.remaining !== 0 && r.code === 'command_changed') this.lines.push(line);
+      let note = `${this.errors[r.code]} at byte ${r.offset}`;
+      if (r.code === 'bad_sequence') note += `: remaining ${frame.remaining} after ${before}, frames were lost`;
+      if (r.code === 'command_changed') note += ': a frame of another multi-frame message';
+      rec.outcome = 'error';
+      rec.error = note + dropped;
+    } else {
+      rec.outcome = r;
+      if (r === 'need_more') this.lines.push(line);
+      else if (r === 'restarted') { ++this.counters.restarted; this.lines = [line]; }
+      else if (r === 'duplicate') ++this.counters.duplicates;
+      else if (r === 'discarded') ++this.counters.discarded;
+      else if (r === 'complete') {
+        this.lines.push(line);
+        if (this.lines.length < 2) {
+          this.lines = [];
+          return out;
+        }
+        ++this.counters.messages_reassembled;
+        let n = this.buf.length;
+        while (n > 0 && this.buf[n - 1] === 0) --n;
+        const t = Uint8Array.from(this.buf.slice(0, n));
+        rec.command = frame.command;
+        rec.lines = this.lines;
+        rec.text = text(t, 0, t.length);
+        rec.json_object = jsonObject(t);
+        this.lines = [];
+      }
+    }
+    out.push(rec);
+    return out;
+  }
+  same(f) {
+    const l = this.last;
+    return l !== null && l.command === f.command && l.remaining === f.remaining && l.payload.every((x, i) => x === f.payload[i]);
+  }
+  step(f) {
+    if (this.same(f)) return 'duplicate';
+    if (this.state === 'complete') { this.state = 'idle'; this.buf = []; }
+    if (this.skipping && f.command === this.skipCommand) {
+      if (f.remaining === 0) this.skipping = false;
+      this.last = f;
+      return 'discarded';
+    }
+    if (this.state === 'idle') return this.start(f);
+    if (f.command !== this.command) {
+      if (f.remaining === 0) return 'single';
+      const broken = this.command;
+      const st = this.start(f);
+      if (typeof st !== 'string') return st;
+      this.skipping = true;
+      this.skipCommand = broken;
+      return new Fail('command_changed', 2);
+    }
+    if (f.remaining >= this.lastRemaining) {
+      const st = this.start(f);
+      return typeof st !== 'string' ? st : 'restarted';
+    }
+    if (f.remaining + 1 !== this.lastRemaining) {
+      this.state = 'idle';
+      this.buf = [];
+      this.last = f;
+      if (f.remaining !== 0) { this.skipping = true; this.skipCommand = f.command; }
+      return new Fail('bad_sequence', 3);
+    }
+    return this.append(f);
+  }
+  start(f) {
+    this.state = 'idle';
+    this.buf = [];
+    this.command = f.command;
+    return this.append(f);  // 256 frames of 15 bytes fit: remaining is one byte
+  }
+  append(f) {
+    for (const x of f.payload) this.buf.push(x);
+    if (f.remaining !== 0 || this.buf.length > f.payload.length) this.last = f;
+    this.lastRemaining = f.remaining;
+    this.state = f.remaining === 0 ? 'complete' : 'collecting';
+    return f.remaining === 0 ? 'complete' : 'need_more';
+  }
+}
+// Whether `t` is one whole JSON object (the library's json_object: a structural check).
+function jsonObject(t) {
+  const space = (c) => c === 0x20 || c === 0x09 || c === 0x0a || c === 0x0d;
+  let i = 0;
+  while (i < t.length && space(t[i])) ++i;
+  if (i === t.length || t[i] !== 0x7b) return false;
+  const open = [];
+  let inString = false;
+  for (; i < t.length; ++i) {
+    const c = t[i];
+    if (inString) {
+      if (c === 0x5c) ++i;
+      else if (c === 0x22) inString = false;
+      else if (c < 0x20) return false;
+      continue;
+    }
+    if (c === 0x22) inString = true;
+    else if (c === 0x7b || c === 0x5b) {
+      if (open.length === 64) return false;
+      open.push(c === 0x7b ? 0x7d : 0x5d);
+    } else if (c === 0x7d || c === 0x5d) {
+      if (open.length === 0 || open[open.length - 1] !== c) return false;
+      open.pop();
+      if (open.length === 0) break;
+    }
+  }
+  if (open.length !== 0 || i >= t.length) return false;
+  for (let k = i + 1; k < t.length; ++k) if (!space(t[k])) return false;
+  return true;
+}
+// The frames of one message: `remaining` counts down to 0, the last frame zero-padded.
+export function fragmentPayload(layout, fixed, command, payload) {
+  const ps = layout.payload_size;
+  const count = payload.length === 0 ? 1 : Math.ceil(payload.length / ps);
+  if (count > 256) throw new RobowireError(`capacity exceeded at byte ${256 * ps}`, { code: 'capacity_exceeded', offset: 256 * ps });
+  const frames = [];
+  for (let i = 0; i < count; ++i) {
+    const f = new Uint8Array(layout.size);
+    for (const [o, v] of fixed) f[o] = v;
+    f[layout.command] = command;
+    f[layout.remaining] = count - 1 - i;
+    f.set(payload.subarray(i * ps, i * ps + ps), layout.payload);
+    frames.push(f);
+  }
+  return frames;
+}
