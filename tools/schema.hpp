@@ -1,30 +1,10 @@
 // The protocols' tables as one JSON document (nlohmann/json): what
 // `robowire list --json` prints and `robowire.schema()` returns in Python.
 // Built from table_v, enum_table_v and flag_bits_v of each protocol's
-// std::variant of messages, so a message added to a protocol appears here
-// with no change. Format (every key always present unless marked):
-//
-//   {"format": 1, "protocols": [
-//     {"name": "buwizz3", "summary": "...", "messages": [
-//       {"name": "set_motor_data", "direction": "command" | "notification" | null,
-//        "key": [48],                  // the bytes that select the message (command; OSP: DEV, CMD)
-//        "fixed": [{"offset": 0, "value": 48, "error": "bad_command"}],
-//        "lengths": [[9, 9]],          // accepted input lengths, as runs [first, last]
-//        "min_size": 9, "max_size": 9, "max_input": 9,
-//        "fields": [FIELD...]}]}],
-//    "errors": [{"code": 0, "name": "ok", "text": "ok"}, ...]}   // robowire::errc_table
-//
-//   FIELD: {"name", "offset", "type" (wire type: u8 i8 u16le i16le u32le i32le
-//           f32le bits text tail record), "value" (the decoded value's kind:
-//           int float bool enum text bytes record), "count" (1 unless
-//           "array"), "array", "optional", "element_size", "size",
-//           "valid": {"min", "max"} | null (int and bits fields),
-//           "unit": {"name", "scale", "offset"} | null,
-//           "bits": {"lo", "width"} (bits fields only),
-//           "enum": [{"name", "value"}...] (enum fields only),
-//           "flag_bits": [{"lo", "width", "name", "values"}...] (flag bytes only),
-//           "capacity" (text and tail fields only),
-//           "record": {"name", "size", "fields": [FIELD...]} (record fields only)}
+// std::variant of messages and from its descriptor, so a message added to a
+// protocol appears here with no change. The format, and the rules a decoder
+// in another language follows to give what `decode --json` gives:
+// docs/cli.md (list). The JavaScript package is generated from it (js/gen).
 #pragma once
 
 #include <robowire/core/fields.hpp>
