@@ -19,6 +19,7 @@
 #include <robowire/navbot/protocol.hpp>
 #include <robowire/osp/protocol.hpp>
 
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -112,7 +113,8 @@ template <class M>
 json message_of(std::string_view direction, std::initializer_list<std::size_t> key_offsets) {
     constexpr auto& t = table_v<M>;
     json fixed = json::array(), key = json::array();
-    for (const auto& b : t.fixed) fixed.push_back({{"offset", b.offset}, {"value", b.value}, {"error", errc_name(b.code)}});
+    for (const auto& b : t.fixed)
+        fixed.push_back({{"offset", b.offset}, {"value", b.value}, {"error", errc_name(b.code)}});
     for (const std::size_t o : key_offsets)  // the bytes the dispatcher reads, at the protocol's key_offsets
         for (const auto& b : t.fixed)
             if (b.offset == o) key.push_back(b.value);
