@@ -66,9 +66,13 @@ function element(body, f, o) {
   return v;
 }
 let enumTables = [];
+let flagValues = [];  // the names of multi-bit flag values, one constant each
+// Fields of a record as one object literal (optional blocks and the text
+// of a JSON payload added after it: keys present only with their block).
 function recordExpr(body, fields, base) {
   const obj = body.tmp();
-  body.push(`const ${obj}={};`);
+  const entries = [];  // [key, expression] of the literal
+  const after = [];    // statements run once the object exists
   for (const f of fields) {
     const o = base + f.offset;
     const key = J(f.name);
@@ -76,42 +80,46 @@ function recordExpr(body, fields, base) {
     inner.n = body.n;
     const vals = [];
     for (let i = 0; i < f.count; ++i) vals.push(element(inner, f, o + i * f.element_size));
-    body.n = inner.n;
     const value = f.array ? `[${vals.join(',')}]` : vals[0];
-    const extra = [];
-    if (f.physical) {
-      const u = f.unit;
-      const phys = (x) => `tidy(${x}*${u.scale}+${u.offset})`;
-      const pv = body.tmp();
-      extra.push(`const ${pv}=${value};${obj}[${key}]=${pv};`);
-      extra.push(`${obj}[${J(f.physical)}]={value:${f.array ? `${pv}.map((x)=>${phys('x')})` : phys(pv)},unit:${J(u.name)}};`);
-      if (f.flag_bits && !f.array) extra.push(bitsOf(obj, f, pv));
-    } else if (f.flag_bits && !f.array && f.value === 'int') {
-      const pv = body.tmp();
-      extra.push(`const ${pv}=${value};${obj}[${key}]=${pv};`, bitsOf(obj, f, pv));
+    const own = [];  // [key, expression] of this field
+    if (f.physical || (f.flag_bits && !f.array && f.value === 'int')) {
+      const pv = inner.tmp();
+      inner.push(`const ${pv}=${value};`);
+      own.push([key, pv]);
+      if (f.physical) {
+        const u = f.unit;
+        // an integer times 1 plus 0 is exact: no rounding to do
+        const phys = (x) => (u.scale === 1 && u.offset === 0 ? x : `tidy(${x}*${u.scale}+${u.offset})`);
+        own.push([J(f.physical), `{value:${f.array ? `${pv}.map((x)=>${phys('x')})` : phys(pv)},unit:${J(u.name)}}`]);
+      }
+      if (f.flag_bits && !f.array) own.push([J(`${f.name}_bits`), bitsOf(f, pv)]);
     } else {
-      extra.push(`${obj}[${key}]=${value};`);
+      own.push([key, value]);
+    }
+    body.n = inner.n;
+    if (f.optional) {
+      after.push(`if(n<=${o})${obj}[${key}]=null;else{if(n<${o + f.size})fail('bad_length',${o});`,
+        ...inner.lines, ...own.map(([k, v]) => `${obj}[${k}]=${v};`), '}');
+    } else {
+      body.lines.push(...inner.lines);
+      entries.push(...own);
     }
     if (f.as_text_when) {
       const w = f.as_text_when;
-      extra.push(`if(${obj}[${J(w.field)}]===${J(w.value)}){let e=${o};while(e<${o + f.size}&&b[e]!==0)++e;${obj}[${J(`${f.name}_text`)}]=text(b,${o},e);}`);
-    }
-    if (f.optional) {
-      body.push(`if(n<=${o})${obj}[${key}]=null;else{if(n<${o + f.size})fail('bad_length',${o});`);
-      body.lines.push(...inner.lines, ...extra, '}');
-    } else {
-      body.lines.push(...inner.lines, ...extra);
+      after.push(`if(${obj}[${J(w.field)}]===${J(w.value)}){let e=${o};while(e<${o + f.size}&&b[e]!==0)++e;${obj}[${J(`${f.name}_text`)}]=text(b,${o},e);}`);
     }
   }
+  body.push(`const ${obj}={${entries.map(([k, v]) => `${k}:${v}`).join(',')}};`);
+  body.lines.push(...after);
   return obj;
 }
-function bitsOf(obj, f, v) {
+function bitsOf(f, v) {
   const parts = f.flag_bits.map((fb) => {
     const raw = `((${v}>>${fb.lo})&${(1 << fb.width) - 1})`;
-    const val = fb.width === 1 ? `${raw}!==0` : `flagName(${J(fb.values)},${raw})`;
+    const val = fb.width === 1 ? `${raw}!==0` : `flagName(FV${flagValues.push(fb.values) - 1},${raw})`;
     return `${J(fb.name)}:${val}`;
   });
-  return `${obj}[${J(`${f.name}_bits`)}]={${parts.join(',')}};`;
+  return `{${parts.join(',')}}`;
 }
 
 function lengthsText(m) {
@@ -158,6 +166,7 @@ export function schemaModule(schema) {
 
 export function generate(schema, p) {
   enumTables = [];
+  flagValues = [];
   const out = [];
   const keyed = p.key_offsets;
   const decs = p.messages.map((m, i) => decoder(m, `d${i}`, p.frame ? [] : keyed));
@@ -179,6 +188,7 @@ export function generate(schema, p) {
   out.push(...infos);
   out.push(...decs);
   out.push(enumTables.map((t, i) => `const EN${i}=${J(t)};`).join('\n'));
+  out.push(flagValues.map((t, i) => `const FV${i}=${J(t)};`).join('\n'));
   out.push(`const D=[${p.messages.map((_, i) => `d${i}`).join(',')}];const MI=[${p.messages.map((_, i) => `M${i}`).join(',')}];`);
   out.push(`const NAMES=${J(p.messages.map((m) => m.name))};`);
   out.push(`const KEYS=${J(byDir)};`);

@@ -27,30 +27,25 @@ const M21={name:"accel_calibration",lengths:"25 bytes",fields:[[1,25,"factors",f
 const M22={name:"charger_settings",lengths:"1..129 bytes",fields:[[1,129,"data",false,0,0,""]]};
 function d0(b,dv,n){
 if(n<13)fail('too_short',n);if(n>13)fail('too_long',13);
-const v0={};
 let v1=1;while(v1<13&&b[v1]!==0)++v1;for(let i=v1;i<13;++i)if(b[i]!==0)fail('bad_padding',i);
-v0["name"]=text(b,1,v1);
+const v0={"name":text(b,1,v1)};
 return v0;
 }
 function d1(b,dv,n){
 if(n<10)fail('too_short',n);if(n>10)fail('too_long',10);
-const v0={};
 const v1=b[1];
 if(v1>1)fail('value_out_of_range',1);
-v0["enabled"]=v1!==0;
 const v2=dv.getUint32(2,true);
 if(v2<10)fail('value_out_of_range',2);
-const v3=v2;v0["idle_timeout_s"]=v3;
-v0["idle_timeout_s_physical"]={value:tidy(v3*1+0),unit:"s"};
+const v3=v2;
 const v4=dv.getUint32(6,true);
-const v5=v4;v0["shallow_sleep_timeout_s"]=v5;
-v0["shallow_sleep_timeout_s_physical"]={value:tidy(v5*1+0),unit:"s"};
+const v5=v4;
+const v0={"enabled":v1!==0,"idle_timeout_s":v3,"idle_timeout_s_physical":{value:v3,unit:"s"},"shallow_sleep_timeout_s":v5,"shallow_sleep_timeout_s_physical":{value:v5,unit:"s"}};
 return v0;
 }
 function d2(b,dv,n){
 if(n<25)fail('too_short',n);if(n>25)fail('too_long',25);
-const v0={};
-v0["factors"]=[f32(dv,1),f32(dv,5),f32(dv,9),f32(dv,13),f32(dv,17),f32(dv,21)];
+const v0={"factors":[f32(dv,1),f32(dv,5),f32(dv,9),f32(dv,13),f32(dv,17),f32(dv,21)]};
 return v0;
 }
 function d3(b,dv,n){
@@ -60,7 +55,6 @@ return v0;
 }
 function d4(b,dv,n){
 if(n<9)fail('too_short',n);if(n>9)fail('too_long',9);
-const v0={};
 const v1=(b[1]<<24>>24);
 if(v1<-127)fail('value_out_of_range',1);
 const v2=(b[2]<<24>>24);
@@ -73,190 +67,154 @@ const v5=(b[5]<<24>>24);
 if(v5<-127)fail('value_out_of_range',5);
 const v6=(b[6]<<24>>24);
 if(v6<-127)fail('value_out_of_range',6);
-const v7=[v1,v2,v3,v4,v5,v6];v0["power"]=v7;
-v0["power_physical"]={value:v7.map((x)=>tidy(x*0.7874015748031497+0)),unit:"%"};
+const v7=[v1,v2,v3,v4,v5,v6];
 const v8=b[7];
 if(v8>63)fail('value_out_of_range',7);
-const v9=v8;v0["brake_flags"]=v9;
-v0["brake_flags_bits"]={"port1":((v9>>0)&1)!==0,"port2":((v9>>1)&1)!==0,"port3":((v9>>2)&1)!==0,"port4":((v9>>3)&1)!==0,"port5":((v9>>4)&1)!==0,"port6":((v9>>5)&1)!==0};
+const v9=v8;
 const v10=b[8];
 if(v10>63)fail('value_out_of_range',8);
-const v11=v10;v0["lut_disable_flags"]=v11;
-v0["lut_disable_flags_bits"]={"port1":((v11>>0)&1)!==0,"port2":((v11>>1)&1)!==0,"port3":((v11>>2)&1)!==0,"port4":((v11>>3)&1)!==0,"port5":((v11>>4)&1)!==0,"port6":((v11>>5)&1)!==0};
+const v11=v10;
+const v0={"power":v7,"power_physical":{value:v7.map((x)=>tidy(x*0.7874015748031497+0)),unit:"%"},"brake_flags":v9,"brake_flags_bits":{"port1":((v9>>0)&1)!==0,"port2":((v9>>1)&1)!==0,"port3":((v9>>2)&1)!==0,"port4":((v9>>3)&1)!==0,"port5":((v9>>4)&1)!==0,"port6":((v9>>5)&1)!==0},"lut_disable_flags":v11,"lut_disable_flags_bits":{"port1":((v11>>0)&1)!==0,"port2":((v11>>1)&1)!==0,"port3":((v11>>2)&1)!==0,"port4":((v11>>3)&1)!==0,"port5":((v11>>4)&1)!==0,"port6":((v11>>5)&1)!==0}};
 return v0;
 }
 function d5(b,dv,n){
 if(n<21)fail('too_short',n);if(n>21)fail('too_long',21);
-const v0={};
 const v1=dv.getInt32(1,true);
 const v2=dv.getInt32(5,true);
 const v3=dv.getInt32(9,true);
 const v4=dv.getInt32(13,true);
-v0["reference"]=[v1,v2,v3,v4];
 const v5=(b[17]<<24>>24);
 if(v5<-127)fail('value_out_of_range',17);
 const v6=(b[18]<<24>>24);
 if(v6<-127)fail('value_out_of_range',18);
-const v7=[v5,v6];v0["power"]=v7;
-v0["power_physical"]={value:v7.map((x)=>tidy(x*0.7874015748031497+0)),unit:"%"};
+const v7=[v5,v6];
 const v8=b[19];
 if(v8>63)fail('value_out_of_range',19);
-const v9=v8;v0["brake_flags"]=v9;
-v0["brake_flags_bits"]={"port1":((v9>>0)&1)!==0,"port2":((v9>>1)&1)!==0,"port3":((v9>>2)&1)!==0,"port4":((v9>>3)&1)!==0,"port5":((v9>>4)&1)!==0,"port6":((v9>>5)&1)!==0};
+const v9=v8;
 const v10=b[20];
 if(v10>63)fail('value_out_of_range',20);
-const v11=v10;v0["lut_disable_flags"]=v11;
-v0["lut_disable_flags_bits"]={"port1":((v11>>0)&1)!==0,"port2":((v11>>1)&1)!==0,"port3":((v11>>2)&1)!==0,"port4":((v11>>3)&1)!==0,"port5":((v11>>4)&1)!==0,"port6":((v11>>5)&1)!==0};
+const v11=v10;
+const v0={"reference":[v1,v2,v3,v4],"power":v7,"power_physical":{value:v7.map((x)=>tidy(x*0.7874015748031497+0)),unit:"%"},"brake_flags":v9,"brake_flags_bits":{"port1":((v9>>0)&1)!==0,"port2":((v9>>1)&1)!==0,"port3":((v9>>2)&1)!==0,"port4":((v9>>3)&1)!==0,"port5":((v9>>4)&1)!==0,"port6":((v9>>5)&1)!==0},"lut_disable_flags":v11,"lut_disable_flags_bits":{"port1":((v11>>0)&1)!==0,"port2":((v11>>1)&1)!==0,"port3":((v11>>2)&1)!==0,"port4":((v11>>3)&1)!==0,"port5":((v11>>4)&1)!==0,"port6":((v11>>5)&1)!==0}};
 return v0;
 }
 function d6(b,dv,n){
 if(n<2)fail('too_short',n);if(n>2)fail('too_long',2);
-const v0={};
 const v1=b[1];
 if(v1<20)fail('value_out_of_range',1);
-const v2=v1;v0["period_ms"]=v2;
-v0["period_ms_physical"]={value:tidy(v2*1+0),unit:"ms"};
+const v2=v1;
+const v0={"period_ms":v2,"period_ms_physical":{value:v2,unit:"ms"}};
 return v0;
 }
 function d7(b,dv,n){
 if(n<13)fail('too_short',n);if(n>13)fail('too_long',13);
-const v0={};
 const v1=b[1];
 const v2=b[2];
 const v3=b[3];
 const v4=b[4];
 const v5=b[5];
 const v6=b[6];
-const v7=[v1,v2,v3,v4,v5,v6];v0["ramp_up"]=v7;
-v0["ramp_up_physical"]={value:v7.map((x)=>tidy(x*1+0)),unit:"%/128ms"};
+const v7=[v1,v2,v3,v4,v5,v6];
 const v8=b[7];
 const v9=b[8];
 const v10=b[9];
 const v11=b[10];
 const v12=b[11];
 const v13=b[12];
-const v14=[v8,v9,v10,v11,v12,v13];v0["ramp_down"]=v14;
-v0["ramp_down_physical"]={value:v14.map((x)=>tidy(x*1+0)),unit:"%/128ms"};
+const v14=[v8,v9,v10,v11,v12,v13];
+const v0={"ramp_up":v7,"ramp_up_physical":{value:v7.map((x)=>x),unit:"%/128ms"},"ramp_down":v14,"ramp_down_physical":{value:v14.map((x)=>x),unit:"%/128ms"}};
 return v0;
 }
 function d8(b,dv,n){
 if(n<2)fail('too_short',n);if(n>2)fail('too_long',2);
-const v0={};
 const v1=b[1];
 if(v1>254)fail('value_out_of_range',1);
-v0["mode"]=v1;
+const v0={"mode":v1};
 return v0;
 }
 function d9(b,dv,n){
 if(n<2)fail('too_short',n);if(n>2)fail('too_long',2);
-const v0={};
 const v1=b[1];
-const v2=v1;v0["timeout_s"]=v2;
-v0["timeout_s_physical"]={value:tidy(v2*1+0),unit:"s"};
+const v2=v1;
+const v0={"timeout_s":v2,"timeout_s_physical":{value:v2,unit:"s"}};
 return v0;
 }
 function d10(b,dv,n){
 if(n<1)fail('too_short',n);if(n>17)fail('too_long',17);
 const v0={};
 if(n<=1)v0["colors"]=null;else{if(n<13)fail('bad_length',1);
-const v1={};
 const v2=b[1];
-v1["r"]=v2;
 const v3=b[2];
-v1["g"]=v3;
 const v4=b[3];
-v1["b"]=v4;
-const v5={};
+const v1={"r":v2,"g":v3,"b":v4};
 const v6=b[4];
-v5["r"]=v6;
 const v7=b[5];
-v5["g"]=v7;
 const v8=b[6];
-v5["b"]=v8;
-const v9={};
+const v5={"r":v6,"g":v7,"b":v8};
 const v10=b[7];
-v9["r"]=v10;
 const v11=b[8];
-v9["g"]=v11;
 const v12=b[9];
-v9["b"]=v12;
-const v13={};
+const v9={"r":v10,"g":v11,"b":v12};
 const v14=b[10];
-v13["r"]=v14;
 const v15=b[11];
-v13["g"]=v15;
 const v16=b[12];
-v13["b"]=v16;
+const v13={"r":v14,"g":v15,"b":v16};
 v0["colors"]=[v1,v5,v9,v13];
 }
 if(n<=13)v0["blink"]=null;else{if(n<17)fail('bad_length',13);
-const v17={};
 const v18=((b[13]>>4)&15);
-const v19=v18;v17["frequency_hz"]=v19;
-v17["frequency_hz_physical"]={value:tidy(v19*1+0),unit:"Hz"};
+const v19=v18;
 const v20=((b[13]>>0)&15);
-const v21=v20;v17["duty"]=v21;
-v17["duty_physical"]={value:tidy(v21*1+1),unit:"/16"};
-const v22={};
+const v21=v20;
+const v17={"frequency_hz":v19,"frequency_hz_physical":{value:v19,unit:"Hz"},"duty":v21,"duty_physical":{value:tidy(v21*1+1),unit:"/16"}};
 const v23=((b[14]>>4)&15);
-const v24=v23;v22["frequency_hz"]=v24;
-v22["frequency_hz_physical"]={value:tidy(v24*1+0),unit:"Hz"};
+const v24=v23;
 const v25=((b[14]>>0)&15);
-const v26=v25;v22["duty"]=v26;
-v22["duty_physical"]={value:tidy(v26*1+1),unit:"/16"};
-const v27={};
+const v26=v25;
+const v22={"frequency_hz":v24,"frequency_hz_physical":{value:v24,unit:"Hz"},"duty":v26,"duty_physical":{value:tidy(v26*1+1),unit:"/16"}};
 const v28=((b[15]>>4)&15);
-const v29=v28;v27["frequency_hz"]=v29;
-v27["frequency_hz_physical"]={value:tidy(v29*1+0),unit:"Hz"};
+const v29=v28;
 const v30=((b[15]>>0)&15);
-const v31=v30;v27["duty"]=v31;
-v27["duty_physical"]={value:tidy(v31*1+1),unit:"/16"};
-const v32={};
+const v31=v30;
+const v27={"frequency_hz":v29,"frequency_hz_physical":{value:v29,unit:"Hz"},"duty":v31,"duty_physical":{value:tidy(v31*1+1),unit:"/16"}};
 const v33=((b[16]>>4)&15);
-const v34=v33;v32["frequency_hz"]=v34;
-v32["frequency_hz_physical"]={value:tidy(v34*1+0),unit:"Hz"};
+const v34=v33;
 const v35=((b[16]>>0)&15);
-const v36=v35;v32["duty"]=v36;
-v32["duty_physical"]={value:tidy(v36*1+1),unit:"/16"};
+const v36=v35;
+const v32={"frequency_hz":v34,"frequency_hz_physical":{value:v34,unit:"Hz"},"duty":v36,"duty_physical":{value:tidy(v36*1+1),unit:"/16"}};
 v0["blink"]=[v17,v22,v27,v32];
 }
 return v0;
 }
 function d11(b,dv,n){
 if(n<2)fail('too_short',n);if(n>2)fail('too_long',2);
-const v0={};
 const v1=b[1];
 if(EN0[v1]===undefined)fail('invalid_enum',1);
-v0["setting"]=EN0[v1];
+const v0={"setting":EN0[v1]};
 return v0;
 }
 function d12(b,dv,n){
 if(n<7)fail('too_short',n);if(n>7)fail('too_long',7);
-const v0={};
 const v1=b[1];
 const v2=b[2];
 const v3=b[3];
 const v4=b[4];
 const v5=b[5];
 const v6=b[6];
-const v7=[v1,v2,v3,v4,v5,v6];v0["limit_raw"]=v7;
-v0["limit"]={value:v7.map((x)=>tidy(x*30+0)),unit:"mA"};
+const v7=[v1,v2,v3,v4,v5,v6];
+const v0={"limit_raw":v7,"limit":{value:v7.map((x)=>tidy(x*30+0)),unit:"mA"}};
 return v0;
 }
 function d13(b,dv,n){
 if(n>1&&b[1]!==16)fail("bad_command",1);
 if(n<7)fail('too_short',n);if(n>7)fail('too_long',7);
-const v0={};
 const v1=b[2];
-v0["channel"]=v1;
 const v2=dv.getUint32(3,true);
-const v3=v2;v0["baudrate"]=v3;
-v0["baudrate_physical"]={value:tidy(v3*1+0),unit:"baud"};
+const v3=v2;
+const v0={"channel":v1,"baudrate":v3,"baudrate_physical":{value:v3,unit:"baud"}};
 return v0;
 }
 function d14(b,dv,n){
 if(n<5)fail('too_short',n);if(n>5)fail('too_long',5);
-const v0={};
 const v1=b[1];
 if(EN1[v1]===undefined)fail('invalid_enum',1);
 const v2=b[2];
@@ -265,53 +223,38 @@ const v3=b[3];
 if(EN3[v3]===undefined)fail('invalid_enum',3);
 const v4=b[4];
 if(EN4[v4]===undefined)fail('invalid_enum',4);
-v0["function"]=[EN1[v1],EN2[v2],EN3[v3],EN4[v4]];
+const v0={"function":[EN1[v1],EN2[v2],EN3[v3],EN4[v4]]};
 return v0;
 }
 function d15(b,dv,n){
 if(n<2)fail('too_short',n);if(n>2)fail('too_long',2);
-const v0={};
 const v1=b[1];
 if(v1>4)fail('value_out_of_range',1);
-v0["port"]=v1;
+const v0={"port":v1};
 return v0;
 }
 function d16(b,dv,n){
 if(n<17)fail('too_short',n);if(n>17)fail('too_long',17);
-const v0={};
 const v1=dv.getInt32(1,true);
 const v2=dv.getInt32(5,true);
 const v3=dv.getInt32(9,true);
 const v4=dv.getInt32(13,true);
-v0["reference"]=[v1,v2,v3,v4];
+const v0={"reference":[v1,v2,v3,v4]};
 return v0;
 }
 function d17(b,dv,n){
 if(n<38)fail('too_short',n);if(n>38)fail('too_long',38);
-const v0={};
 const v1=b[1];
 if(v1>3)fail('value_out_of_range',1);
-v0["port"]=v1;
-v0["out_lp"]=f32(dv,2);
-v0["d_lp"]=f32(dv,6);
-v0["speed_lp"]=f32(dv,10);
-v0["kp"]=f32(dv,14);
-v0["ki"]=f32(dv,18);
-v0["kd"]=f32(dv,22);
-v0["lim_i"]=f32(dv,26);
-v0["reference_rate_limit"]=f32(dv,30);
 const v2=(b[34]<<24>>24);
 if(v2<1)fail('value_out_of_range',34);
-v0["lim_out"]=v2;
 const v3=(b[35]<<24>>24);
 if(v3<0)fail('value_out_of_range',35);
-v0["deadband_out"]=v3;
 const v4=(b[36]<<24>>24);
 if(v4<0)fail('value_out_of_range',36);
-v0["deadband_out_boost"]=v4;
 const v5=b[37];
 if(EN5[v5]===undefined)fail('invalid_enum',37);
-v0["mode"]=EN5[v5];
+const v0={"port":v1,"out_lp":f32(dv,2),"d_lp":f32(dv,6),"speed_lp":f32(dv,10),"kp":f32(dv,14),"ki":f32(dv,18),"kd":f32(dv,22),"lim_i":f32(dv,26),"reference_rate_limit":f32(dv,30),"lim_out":v2,"deadband_out":v3,"deadband_out_boost":v4,"mode":EN5[v5]};
 return v0;
 }
 function d18(b,dv,n){
@@ -326,110 +269,76 @@ return v0;
 }
 function d20(b,dv,n){
 if(n<54)fail('too_short',n);if(n>129)fail('too_long',129);
-const v0={};
 const v1=b[1];
-const v2=v1;v0["flags"]=v2;
-v0["flags_bits"]={"error":((v2>>0)&1)!==0,"motion_wakeup":((v2>>1)&1)!==0,"long_range_phy":((v2>>2)&1)!==0,"battery":flagName(["empty","low","medium","full"],((v2>>3)&3)),"charging":((v2>>5)&1)!==0,"usb_connected":((v2>>6)&1)!==0};
+const v2=v1;
 const v3=b[2];
-const v4=v3;v0["battery_voltage_raw"]=v4;
-v0["battery_voltage"]={value:tidy(v4*0.05+9),unit:"V"};
+const v4=v3;
 const v5=b[3];
 const v6=b[4];
 const v7=b[5];
 const v8=b[6];
 const v9=b[7];
 const v10=b[8];
-const v11=[v5,v6,v7,v8,v9,v10];v0["motor_current_raw"]=v11;
-v0["motor_current"]={value:v11.map((x)=>tidy(x*0.015+0)),unit:"A"};
+const v11=[v5,v6,v7,v8,v9,v10];
 const v12=b[9];
-const v13=v12;v0["temperature_c"]=v13;
-v0["temperature_c_physical"]={value:tidy(v13*1+0),unit:"degC"};
+const v13=v12;
 const v14=((b[10]|b[11]<<8)<<16>>16);
 const v15=((b[12]|b[13]<<8)<<16>>16);
 const v16=((b[14]|b[15]<<8)<<16>>16);
-const v17=[v14,v15,v16];v0["accel_raw"]=v17;
-v0["accel"]={value:v17.map((x)=>tidy(x*0.488+0)),unit:"mg"};
-const v18={};
+const v17=[v14,v15,v16];
 const v19=b[16];
-v18["command"]=v19;
 const v20=b[17];
-v18["code"]=v20;
 const v21=b[18];
 const v22=b[19];
 const v23=b[20];
-v18["data"]=[v21,v22,v23];
-v0["bootloader_response"]=v18;
+const v18={"command":v19,"code":v20,"data":[v21,v22,v23]};
 const v24=b[21];
-const v25=v24;v0["charge_current_ma"]=v25;
-v0["charge_current_ma_physical"]={value:tidy(v25*1+0),unit:"mA"};
-const v26={};
+const v25=v24;
 const v27=b[22];
-v26["type"]=v27;
 const v28=(b[23]<<24>>24);
-v26["velocity"]=v28;
 const v29=((b[24]|b[25]<<8)<<16>>16);
-const v30=v29;v26["absolute_position"]=v30;
-v26["absolute_position_physical"]={value:tidy(v30*1+0),unit:"deg"};
+const v30=v29;
 const v31=dv.getInt32(26,true);
-const v32=v31;v26["position"]=v32;
-v26["position_physical"]={value:tidy(v32*1+0),unit:"deg"};
-const v33={};
+const v32=v31;
+const v26={"type":v27,"velocity":v28,"absolute_position":v30,"absolute_position_physical":{value:v30,unit:"deg"},"position":v32,"position_physical":{value:v32,unit:"deg"}};
 const v34=b[30];
-v33["type"]=v34;
 const v35=(b[31]<<24>>24);
-v33["velocity"]=v35;
 const v36=((b[32]|b[33]<<8)<<16>>16);
-const v37=v36;v33["absolute_position"]=v37;
-v33["absolute_position_physical"]={value:tidy(v37*1+0),unit:"deg"};
+const v37=v36;
 const v38=dv.getInt32(34,true);
-const v39=v38;v33["position"]=v39;
-v33["position_physical"]={value:tidy(v39*1+0),unit:"deg"};
-const v40={};
+const v39=v38;
+const v33={"type":v34,"velocity":v35,"absolute_position":v37,"absolute_position_physical":{value:v37,unit:"deg"},"position":v39,"position_physical":{value:v39,unit:"deg"}};
 const v41=b[38];
-v40["type"]=v41;
 const v42=(b[39]<<24>>24);
-v40["velocity"]=v42;
 const v43=((b[40]|b[41]<<8)<<16>>16);
-const v44=v43;v40["absolute_position"]=v44;
-v40["absolute_position_physical"]={value:tidy(v44*1+0),unit:"deg"};
+const v44=v43;
 const v45=dv.getInt32(42,true);
-const v46=v45;v40["position"]=v46;
-v40["position_physical"]={value:tidy(v46*1+0),unit:"deg"};
-const v47={};
+const v46=v45;
+const v40={"type":v41,"velocity":v42,"absolute_position":v44,"absolute_position_physical":{value:v44,unit:"deg"},"position":v46,"position_physical":{value:v46,unit:"deg"}};
 const v48=b[46];
-v47["type"]=v48;
 const v49=(b[47]<<24>>24);
-v47["velocity"]=v49;
 const v50=((b[48]|b[49]<<8)<<16>>16);
-const v51=v50;v47["absolute_position"]=v51;
-v47["absolute_position_physical"]={value:tidy(v51*1+0),unit:"deg"};
+const v51=v50;
 const v52=dv.getInt32(50,true);
-const v53=v52;v47["position"]=v53;
-v47["position_physical"]={value:tidy(v53*1+0),unit:"deg"};
-v0["pu_motors"]=[v26,v33,v40,v47];
+const v53=v52;
+const v47={"type":v48,"velocity":v49,"absolute_position":v51,"absolute_position_physical":{value:v51,unit:"deg"},"position":v53,"position_physical":{value:v53,unit:"deg"}};
+const v0={"flags":v2,"flags_bits":{"error":((v2>>0)&1)!==0,"motion_wakeup":((v2>>1)&1)!==0,"long_range_phy":((v2>>2)&1)!==0,"battery":flagName(FV0,((v2>>3)&3)),"charging":((v2>>5)&1)!==0,"usb_connected":((v2>>6)&1)!==0},"battery_voltage_raw":v4,"battery_voltage":{value:tidy(v4*0.05+9),unit:"V"},"motor_current_raw":v11,"motor_current":{value:v11.map((x)=>tidy(x*0.015+0)),unit:"A"},"temperature_c":v13,"temperature_c_physical":{value:v13,unit:"degC"},"accel_raw":v17,"accel":{value:v17.map((x)=>tidy(x*0.488+0)),unit:"mg"},"bootloader_response":v18,"charge_current_ma":v25,"charge_current_ma_physical":{value:v25,unit:"mA"},"pu_motors":[v26,v33,v40,v47]};
 if(n<=54)v0["pid_state"]=null;else{if(n<68)fail('bad_length',54);
-const v54={};
-v54["process_value"]=f32(dv,54);
-v54["error"]=f32(dv,58);
-v54["output"]=f32(dv,62);
 const v55=(b[66]<<24>>24);
-v54["integrator"]=v55;
 const v56=(b[67]<<24>>24);
-v54["motor_output"]=v56;
+const v54={"process_value":f32(dv,54),"error":f32(dv,58),"output":f32(dv,62),"integrator":v55,"motor_output":v56};
 v0["pid_state"]=v54;
 }
 return v0;
 }
 function d21(b,dv,n){
 if(n<25)fail('too_short',n);if(n>25)fail('too_long',25);
-const v0={};
-v0["factors"]=[f32(dv,1),f32(dv,5),f32(dv,9),f32(dv,13),f32(dv,17),f32(dv,21)];
+const v0={"factors":[f32(dv,1),f32(dv,5),f32(dv,9),f32(dv,13),f32(dv,17),f32(dv,21)]};
 return v0;
 }
 function d22(b,dv,n){
 if(n<1)fail('too_short',n);if(n>129)fail('too_long',129);
-const v0={};
-v0["data"]=hex(b,1,Math.min(n,129));
+const v0={"data":hex(b,1,Math.min(n,129))};
 return v0;
 }
 const EN0={"0":"hz_12_5","1":"hz_25","2":"hz_50","3":"hz_100","8":"hz_0_781","9":"hz_1_563","10":"hz_3_125","11":"hz_6_25"};
@@ -438,6 +347,7 @@ const EN2={"0":"generic_pwm","16":"pu_simple_pwm","20":"pu_speed_servo","21":"pu
 const EN3={"0":"generic_pwm","16":"pu_simple_pwm","20":"pu_speed_servo","21":"pu_position_servo","22":"pu_absolute_position_servo"};
 const EN4={"0":"generic_pwm","16":"pu_simple_pwm","20":"pu_speed_servo","21":"pu_position_servo","22":"pu_absolute_position_servo"};
 const EN5={"0":"generic_pwm","16":"pu_simple_pwm","20":"pu_speed_servo","21":"pu_position_servo","22":"pu_absolute_position_servo"};
+const FV0=["empty","low","medium","full"];
 const D=[d0,d1,d2,d3,d4,d5,d6,d7,d8,d9,d10,d11,d12,d13,d14,d15,d16,d17,d18,d19,d20,d21,d22];const MI=[M0,M1,M2,M3,M4,M5,M6,M7,M8,M9,M10,M11,M12,M13,M14,M15,M16,M17,M18,M19,M20,M21,M22];
 const NAMES=["set_device_name","set_motion_wakeup","set_accel_calibration","read_accel_calibration","set_motor_data","set_motor_data_extended","set_data_period","set_ramp_rates","set_motor_timeout","activate_watchdog","set_led_status","set_accel_lpf","set_current_limits","set_uart_baudrate","set_pu_port_function","enable_pid_reporting","set_servo_reference","set_pid_parameters","activate_shelf_mode","check_charger_settings","status","accel_calibration","charger_settings"];
 const KEYS={"command":{"32":0,"33":1,"34":2,"35":3,"48":4,"49":5,"50":6,"51":7,"52":8,"53":9,"54":10,"55":11,"56":12,"64":13,"80":14,"81":15,"82":16,"83":17,"161":18,"172":19},"notification":{"1":20,"35":21,"172":22}};

@@ -32,10 +32,9 @@ if(n>3&&b[3]!==17)fail("bad_command",3);
 if(n>8&&b[8]!==85)fail("bad_trailer",8);
 if(n>9&&b[9]!==119)fail("bad_trailer",9);
 if(n<10)fail('too_short',n);if(n>10)fail('too_long',10);
-const v0={};
 const v1=b[4];
 if(EN0[v1]===undefined)fail('invalid_enum',4);
-v0["type"]=EN0[v1];
+const v0={"type":EN0[v1]};
 return v0;
 }
 function d2(b,dv,n){
@@ -46,12 +45,10 @@ if(n>3&&b[3]!==2)fail("bad_command",3);
 if(n>8&&b[8]!==85)fail("bad_trailer",8);
 if(n>9&&b[9]!==119)fail("bad_trailer",9);
 if(n<10)fail('too_short',n);if(n>10)fail('too_long',10);
-const v0={};
 const v1=b[4];
-v0["joint"]=v1;
 const v2=(b[5]|b[6]<<8);
-const v3=v2;v0["angle"]=v3;
-v0["angle_physical"]={value:tidy(v3*0.00019174759848570515+0),unit:"rad"};
+const v3=v2;
+const v0={"joint":v1,"angle":v3,"angle_physical":{value:tidy(v3*0.00019174759848570515+0),unit:"rad"}};
 return v0;
 }
 function d3(b,dv,n){
@@ -106,10 +103,9 @@ if(n>3&&b[3]!==17)fail("bad_command",3);
 if(n>8&&b[8]!==85)fail("bad_trailer",8);
 if(n>9&&b[9]!==119)fail("bad_trailer",9);
 if(n<10)fail('too_short',n);if(n>10)fail('too_long',10);
-const v0={};
 const v1=(b[4]|b[5]<<8);
-const v2=v1;v0["soc_raw"]=v2;
-v0["soc"]={value:tidy(v2*0.0015259021896696422+0),unit:"%"};
+const v2=v1;
+const v0={"soc_raw":v2,"soc":{value:tidy(v2*0.0015259021896696422+0),unit:"%"}};
 return v0;
 }
 function d8(b,dv,n){
@@ -120,10 +116,9 @@ if(n>3&&b[3]!==18)fail("bad_command",3);
 if(n>8&&b[8]!==85)fail("bad_trailer",8);
 if(n>9&&b[9]!==119)fail("bad_trailer",9);
 if(n<10)fail('too_short',n);if(n>10)fail('too_long',10);
-const v0={};
 const v1=((b[4]|b[5]<<8)<<16>>16);
-const v2=v1;v0["centivolts"]=v2;
-v0["centivolts_physical"]={value:tidy(v2*0.01+0),unit:"V"};
+const v2=v1;
+const v0={"centivolts":v2,"centivolts_physical":{value:tidy(v2*0.01+0),unit:"V"}};
 return v0;
 }
 function d9(b,dv,n){
@@ -134,10 +129,9 @@ if(n>3&&b[3]!==19)fail("bad_command",3);
 if(n>8&&b[8]!==85)fail("bad_trailer",8);
 if(n>9&&b[9]!==119)fail("bad_trailer",9);
 if(n<10)fail('too_short',n);if(n>10)fail('too_long',10);
-const v0={};
 const v1=((b[4]|b[5]<<8)<<16>>16);
-const v2=v1;v0["milliamps"]=v2;
-v0["milliamps_physical"]={value:tidy(v2*0.001+0),unit:"A"};
+const v2=v1;
+const v0={"milliamps":v2,"milliamps_physical":{value:tidy(v2*0.001+0),unit:"A"}};
 return v0;
 }
 function d10(b,dv,n){
@@ -148,17 +142,16 @@ if(n>3&&b[3]!==20)fail("bad_command",3);
 if(n>8&&b[8]!==85)fail("bad_trailer",8);
 if(n>9&&b[9]!==119)fail("bad_trailer",9);
 if(n<10)fail('too_short',n);if(n>10)fail('too_long',10);
-const v0={};
 const v1=b[4];
 if(EN1[v1]===undefined)fail('invalid_enum',4);
-v0["state"]=EN1[v1];
 const v2=b[5];
-const v3=v2;v0["flags"]=v3;
-v0["flags_bits"]={"low_voltage":((v3>>0)&1)!==0,"high_voltage":((v3>>1)&1)!==0,"overheat":((v3>>2)&1)!==0,"short_circuit":((v3>>3)&1)!==0};
+const v3=v2;
+const v0={"state":EN1[v1],"flags":v3,"flags_bits":{"low_voltage":((v3>>0)&1)!==0,"high_voltage":((v3>>1)&1)!==0,"overheat":((v3>>2)&1)!==0,"short_circuit":((v3>>3)&1)!==0}};
 return v0;
 }
 const EN0={"0":"invalid","1":"arm1","2":"obp1","3":"o2d1"};
 const EN1={"0":"unknown","1":"idle","2":"discharging","3":"charging","4":"fully_charged"};
+
 const D=[d0,d1,d2,d3,d4,d5,d6,d7,d8,d9,d10];const MI=[M0,M1,M2,M3,M4,M5,M6,M7,M8,M9,M10];
 const NAMES=["request_device_type","device_type","set_angle","request_soc","request_voltage","request_current","request_status","soc","voltage","current","status"];
 const KEYS={"any":{"0,1":0,"0,17":1,"1,2":2,"2,1":3,"2,2":4,"2,3":5,"2,4":6,"2,17":7,"2,18":8,"2,19":9,"2,20":10}};
@@ -173,16 +166,13 @@ if(n>1&&b[1]!==170)fail("bad_header",1);
 if(n>8&&b[8]!==85)fail("bad_trailer",8);
 if(n>9&&b[9]!==119)fail("bad_trailer",9);
 if(n<10)fail('too_short',n);if(n>10)fail('too_long',10);
-const v0={};
 const v1=b[2];
-v0["device"]=v1;
 const v2=b[3];
-v0["command"]=v2;
 const v3=b[4];
 const v4=b[5];
 const v5=b[6];
 const v6=b[7];
-v0["params"]=[v3,v4,v5,v6];
+const v0={"device":v1,"command":v2,"params":[v3,v4,v5,v6]};
 return v0;
 }
 const MF={name:"frame",lengths:"10 bytes",fields:[[2,3,"device",true,0,255,""],[3,4,"command",true,0,255,""],[4,8,"params",true,0,255,""]]};
