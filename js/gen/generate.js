@@ -224,7 +224,7 @@ if(c===undefined)return decodeAs(${J(directions[0])},b,dv,n);
 const cf=fits(c,n),tf=fits(t,n);
 if(cf&&!tf)return decodeAs(${J(directions[0])},b,dv,n);
 if(tf&&!cf)return decodeAs(${J(directions[1])},b,dv,n);
-if(cf&&tf)throw new RobowireError(b[0].toString(16).toUpperCase().padStart(2,'0')+' is a ${directions[0]} and a ${directions[1]} of '+n+' bytes: give a direction');
+if(cf&&tf)throw new RobowireError('0x'+b[0].toString(16).toUpperCase().padStart(2,'0')+' is the ${directions[0]} '+NAMES[c]+' ('+MI[c].lengths+') and the ${directions[1]} '+NAMES[t]+' ('+MI[t].lengths+'); '+n+(n===1?' byte':' bytes')+' given: pass the direction ('+${J(directions.map((d) => `'${d}'`).join(' or '))}+')',{messageName:null});
 return decodeAs(${J(directions[0])},b,dv,n);}`);
     } else {
       out.push(`function decodeAny(b,dv,n){return decodeAs('any',b,dv,n);}`);

@@ -369,7 +369,7 @@ if(c===undefined)return decodeAs("command",b,dv,n);
 const cf=fits(c,n),tf=fits(t,n);
 if(cf&&!tf)return decodeAs("command",b,dv,n);
 if(tf&&!cf)return decodeAs("notification",b,dv,n);
-if(cf&&tf)throw new RobowireError(b[0].toString(16).toUpperCase().padStart(2,'0')+' is a command and a notification of '+n+' bytes: give a direction');
+if(cf&&tf)throw new RobowireError('0x'+b[0].toString(16).toUpperCase().padStart(2,'0')+' is the command '+NAMES[c]+' ('+MI[c].lengths+') and the notification '+NAMES[t]+' ('+MI[t].lengths+'); '+n+(n===1?' byte':' bytes')+' given: pass the direction ('+"'command' or 'notification'"+')',{messageName:null});
 return decodeAs("command",b,dv,n);}
 // decode(bytes, {direction}) -> {type:'message', protocol, message, fields}; RobowireError otherwise.
 export function decode(bytes,{direction}={}){const b=bytesOf(bytes);return decodeAny(b,new DataView(b.buffer,b.byteOffset,b.length),b.length,direction);}
