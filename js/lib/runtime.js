@@ -86,18 +86,27 @@ export function plainError(errors, code, offset) {
 // ---- encode, from a message's table (generated ENC entries)
 const utf8out = new TextEncoder();
 const setters = { u16le: 'setUint16', i16le: 'setInt16', u32le: 'setUint32', i32le: 'setInt32', f32le: 'setFloat32' };
-function derivedKey(k, fields) {
-  return fields.some((f) => f.physical === k || `${f.name}_bits` === k || `${f.name}_text` === k);
+// The keys a record's object may hold: its fields and what decode adds to them.
+const knownKeys = new WeakMap();
+function keysOf(fields) {
+  let k = knownKeys.get(fields);
+  if (k === undefined) {
+    k = new Set(fields.flatMap((f) => [f.name, `${f.name}_bits`, `${f.name}_text`, ...(f.physical ? [f.physical] : [])]));
+    knownKeys.set(fields, k);
+  }
+  return k;
+}
+function bad(ctx, code, o, path) {
+  throw Object.assign(messageError(ctx.E, ctx.info, code, o), { field: path });
 }
 function put(ctx, f, v, o, path) {
   const { out, dv } = ctx;
-  const bad = (code) => { throw Object.assign(messageError(ctx.E, ctx.info, code, o), { field: path }); };
   if (f.type === 'record') return putRecord(ctx, f.record, v ?? {}, o, path);
   if (f.type === 'text') {
     if (v === undefined || v === null) v = '';
     if (typeof v !== 'string') throw new TypeError(`encode: ${path}: text expected`);
     const t = utf8out.encode(v);
-    if (t.length > f.capacity || t.includes(0)) bad('value_out_of_range');
+    if (t.length > f.capacity || t.includes(0)) bad(ctx, 'value_out_of_range', o, path);
     out.set(t, o);
     return;
   }
@@ -112,13 +121,13 @@ function put(ctx, f, v, o, path) {
   else if (typeof v === 'boolean') raw = v ? 1 : 0;
   else if (typeof v === 'string' && f.enum) {
     raw = f.enum[v];
-    if (raw === undefined) bad('invalid_enum');
+    if (raw === undefined) bad(ctx, 'invalid_enum', o, path);
   } else raw = Number(v);
   if (!Number.isInteger(raw)) throw new TypeError(`encode: ${path}: an integer expected, not ${String(v)}`);
   if (f.enum) {
-    if (!Object.values(f.enum).includes(raw)) bad('invalid_enum');
+    if (!Object.values(f.enum).includes(raw)) bad(ctx, 'invalid_enum', o, path);
   } else if (f.valid && (raw < f.valid.min || raw > f.valid.max)) {
-    bad('value_out_of_range');
+    bad(ctx, 'value_out_of_range', o, path);
   }
   if (f.type === 'bits') {
     const m = ((1 << f.bits.width) - 1) << f.bits.lo;
@@ -131,8 +140,9 @@ function put(ctx, f, v, o, path) {
 }
 function putRecord(ctx, fields, obj, base, path) {
   if (obj === null || typeof obj !== 'object' || Array.isArray(obj)) throw new TypeError(`encode: ${path}: an object expected`);
-  for (const k of Object.keys(obj))
-    if (!fields.some((f) => f.name === k) && !derivedKey(k, fields))
+  const known = keysOf(fields);
+  for (const k in obj)
+    if (!known.has(k))
       throw new RobowireError(`unknown field ${path ? `${path}.` : ''}${k} (fields: ${fields.map((f) => f.name).join(', ')})`,
         { messageName: ctx.info.name });
   for (const f of fields) {
