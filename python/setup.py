@@ -28,24 +28,29 @@ flags = ["-Wall", "-Wextra", "-Wpedantic", "-Wconversion", "-Wsign-conversion", 
          # pybind11's and Python's headers are not ours: no warnings from them
          "-isystem", pybind11.get_include(), "-isystem", sysconfig.get_paths()["include"]]
 if "clang" not in (os.environ.get("CC") or sysconfig.get_config_var("CC") or ""):
-    flags.append("-Wno-restrict")  # as tools/CMakeLists.txt: g++ 12's false positive (GCC bug 105329) in the tool's sources
+    flags.append("-Wno-restrict")  # as tools/CMakeLists.txt: g++ 12's false positive (GCC bug 105329) in the tools library
 if os.environ.get("ROBOWIRE_PY_WERROR") == "1":
     flags.append("-Werror")
 
 ParallelCompile("ROBOWIRE_PY_JOBS", default=2).install()
 
-# read_log and to_csv: the command-line tool's log reader and output formats (no CLI11; nlohmann/json, header-only)
-tool_sources = ["hex", "input", "logs", "output", "protocols", "buwizz3", "buwizz3_encode", "navbot", "osp"]
+# The tools library (tools/lib, namespace robowire::tools: log reader, output formats, schema, one driver per
+# protocol; nlohmann/json, header-only), shared with the command-line tool. ROBOWIRE_TOOLS_LIB: a
+# librobowire_tools.a already built by CMake (position independent), linked instead of compiling its sources.
+tools = root / "tools" / "lib"
+tools_lib = os.environ.get("ROBOWIRE_TOOLS_LIB")
+tool_sources = [] if tools_lib else [str(p) for p in sorted(tools.glob("*.cpp"))]
 
 extension = Pybind11Extension(
     "robowire._robowire",
-    sorted(str(p.relative_to(here)) for p in (here / "src").glob("*.cpp")) + [str(root / "tools" / f"{n}.cpp") for n in tool_sources],
-    include_dirs=[str(include), str(root / "tools")],
+    sorted(str(p.relative_to(here)) for p in (here / "src").glob("*.cpp")) + tool_sources,
+    include_dirs=[str(include), str(tools)],
     cxx_std=20,
     extra_compile_args=flags,
+    extra_objects=[tools_lib] if tools_lib else [],
     extra_link_args=["-s"],
     # any header changed: rebuild (setuptools compares these with the built module)
-    depends=[str(p) for p in sorted((here / "src").glob("*.hpp"))] + [str(p) for p in sorted((root / "tools").glob("*.hpp"))]
+    depends=[str(p) for p in sorted((here / "src").glob("*.hpp"))] + [str(p) for p in sorted(tools.glob("*.hpp"))]
     + [str(p) for p in sorted(include.rglob("*.hpp"))],
 )
 

@@ -426,7 +426,7 @@ int main(int argc, char** argv) {
         "Exit status: 0 ok; 1 bad input (the message names the problem, the byte and the field);\n"
         "2 usage error (unknown command, option, protocol, message or field; bad option value).\n"
         "Run robowire <command> --help for a command's options. Manual: docs/cli.md");
-    std::vector<std::string> names;  // every protocol (tools/protocols.cpp)
+    std::vector<std::string> names;  // every protocol (tools/lib/protocols.cpp)
     for (const protocol* p : protocols()) names.emplace_back(p->name);
     const std::string one_of = protocol_names();  // "buwizz3, navbot or osp"
 

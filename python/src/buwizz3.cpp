@@ -17,7 +17,7 @@ PyObject* protocol() {
     return p;
 }
 
-using robowire::cli::hex2;
+using robowire::tools::hex2;
 
 // The message of variant V whose command byte is `cmd`.
 struct candidate {

@@ -1,5 +1,5 @@
 // robowire._robowire.LogReader: the command-line tool's log reader
-// (tools/logs.cpp, tools/input.cpp, tools/output.cpp, compiled into the
+// (tools/lib/logs.cpp, tools/lib/input.cpp, tools/lib/output.cpp, compiled into the
 // extension) fed line by line, its records handed to Python as they are
 // decoded: JSON lines (read_log) or CSV text (to_csv). Memory: one block of
 // input, one line and the records of one line.
@@ -12,28 +12,28 @@
 #include <optional>
 #include <string>
 
-#include "cli.hpp"
+#include "tools.hpp"
 #include "protocols.hpp"
 
 namespace rwpy {
 namespace {
 namespace py = pybind11;
-namespace cli = robowire::cli;
+namespace tools = robowire::tools;
 
 class log_reader {
 public:
     log_reader(const py::object& source, const std::string& protocol, const std::optional<std::string>& since,
                const std::optional<std::string>& until, const std::string& format, const std::string& message)
-        : out_(format == "csv" ? cli::format_kind::csv : cli::format_kind::json, false) {
+        : out_(format == "csv" ? tools::format_kind::csv : tools::format_kind::json, false) {
         if (format != "json" && format != "csv") throw py::value_error("format: json or csv, not '" + format + "'");
         if (!protocol.empty()) {
-            p_ = cli::find_protocol(protocol);
+            p_ = tools::find_protocol(protocol);
             if (!p_)
-                throw py::value_error("unknown protocol '" + protocol + "' (" + cli::protocol_names() + ")");
+                throw py::value_error("unknown protocol '" + protocol + "' (" + tools::protocol_names() + ")");
         }
-        auto time_of = [](const std::optional<std::string>& t, const char* what) -> std::optional<cli::time_point> {
+        auto time_of = [](const std::optional<std::string>& t, const char* what) -> std::optional<tools::time_point> {
             if (!t) return std::nullopt;
-            auto tp = cli::parse_time_point(*t);
+            auto tp = tools::parse_time_point(*t);
             if (!tp)
                 throw py::value_error(std::string(what) + ": '" + *t +
                                       "' is no time (YYYY-MM-DD[THH:MM[:SS[.mmm]]] or HH:MM[:SS[.mmm]])");
@@ -60,13 +60,13 @@ public:
                                  std::string(py::str(py::type::of(source).attr("__name__"))));
         }
         out_.sink = [this](std::string_view records) { records_.append(records); };
-        decoder_ = std::make_unique<cli::line_decoder>(p_, in_.name, out_, opt_);
+        decoder_ = std::make_unique<tools::line_decoder>(p_, in_.name, out_, opt_);
     }
 
     // The records of the next lines that have any ("" at the end of the input):
     // JSON lines, or CSV rows (the header first) in blocks of about 64 KB.
     py::str next() {
-        const std::size_t want = out_.kind == cli::format_kind::csv ? (1u << 16) : 1;
+        const std::size_t want = out_.kind == tools::format_kind::csv ? (1u << 16) : 1;
         while (records_.size() < want && !done_) {
             step();
             out_.flush();  // (to records_)
@@ -128,11 +128,11 @@ private:
         return k;
     }
 
-    const cli::protocol* p_ = nullptr;
-    cli::log_options opt_;
-    cli::output out_;
-    cli::input_stream in_;
-    std::unique_ptr<cli::line_decoder> decoder_;
+    const tools::protocol* p_ = nullptr;
+    tools::log_options opt_;
+    tools::output out_;
+    tools::input_stream in_;
+    std::unique_ptr<tools::line_decoder> decoder_;
     py::object file_;
     std::string pending_, records_;
     std::size_t pending_at_ = 0, num_ = 0;

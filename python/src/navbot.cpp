@@ -17,7 +17,7 @@ PyObject* protocol() {
     return p;
 }
 
-using robowire::cli::sign_magnitude_notes;  // the notes the command-line tool gives
+using robowire::tools::sign_magnitude_notes;  // the notes the command-line tool gives
 
 // The payload of a JSON frame as text (up to the first zero byte).
 std::string payload_text(const nb::frame& f) {

@@ -16,5 +16,5 @@ void init_navbot(pybind11::module_& m);
 void init_osp(pybind11::module_& m);
 void init_logs(pybind11::module_& m);  // logs.cpp: LogReader
 
-using robowire::cli::valid_lengths;  // "1 byte", "54 or 68..129 bytes" (tools/text.hpp)
+using robowire::tools::valid_lengths;  // "1 byte", "54 or 68..129 bytes" (tools/lib/text.hpp)
 }  // namespace rwpy

@@ -3,7 +3,7 @@ import pytest
 
 import robowire
 from robowire import buwizz3, navbot, osp
-from vectors import CASES, STATUS_54, STATUS_68, STATUS_68_FIELDS
+from vectors import CASES, ENCODE_ALSO, STATUS_54, STATUS_68, STATUS_68_FIELDS
 
 MODULES = {"buwizz3": buwizz3, "navbot": navbot, "osp": osp}
 
@@ -24,6 +24,12 @@ def test_golden_encode(proto, direction, hexs, message, fields, kwargs):
     # and from what decode returns
     d = m.decode(bytes.fromhex(hexs), direction=direction) if direction else m.decode(bytes.fromhex(hexs))
     assert m.encode(d) == bytes.fromhex(hexs)
+
+
+@pytest.mark.parametrize("proto,hexs,message,kwargs", ENCODE_ALSO, ids=[f"{c[0]}-{c[2]}" for c in ENCODE_ALSO])
+def test_golden_encode_other_spellings(proto, hexs, message, kwargs):
+    # record fields left out are 0; an enumerator may be given as its number
+    assert MODULES[proto].encode(message, **kwargs) == bytes.fromhex(hexs)
 
 
 def test_buwizz3_direction_from_command_byte_and_length():

@@ -5,7 +5,7 @@ import pytest
 
 import robowire
 from robowire import DecodeError, EncodeError, buwizz3, navbot, osp
-from vectors import STATUS_68
+from vectors import ERRORS, STATUS_68
 
 
 def decode_error(fn, *args, **kwargs):
@@ -25,44 +25,17 @@ def test_errors_are_value_errors():
     assert not issubclass(DecodeError, EncodeError) and not issubclass(EncodeError, DecodeError)
 
 
-@pytest.mark.parametrize("module,hexs,code,offset,field,message,text", [
-    (buwizz3, "32 0A", "value_out_of_range", 1, "period_ms", "set_data_period",
-     "set_data_period.period_ms: value out of range (valid 20..255 ms) at byte 1"),
-    (buwizz3, "30 80 00 00 00 00 00 00 00", "value_out_of_range", 1, "power", "set_motor_data",
-     "set_motor_data.power: value out of range (valid -127..127 raw) at byte 1"),
-    (buwizz3, "37 05", "invalid_enum", 1, "setting", "set_accel_lpf", "set_accel_lpf.setting: value is not a valid code at byte 1"),
-    (buwizz3, "30 00", "too_short", 2, None, "set_motor_data", "set_motor_data: input too short (9 bytes) at byte 2"),
-    (buwizz3, "30 00 00 00 00 00 00 00 00 00", "too_long", 9, None, "set_motor_data",
-     "set_motor_data: input too long (9 bytes) at byte 9"),
-    (buwizz3, "01" + "00" * 59, "bad_length", 54, "pid_state", "status",
-     "status.pid_state: length matches no form of the message (54 or 68..129 bytes) at byte 54"),
-    (buwizz3, "36 00 00 00 00", "bad_length", 1, "colors", "set_led_status",
-     "set_led_status.colors: length matches no form of the message (1, 13 or 17 bytes) at byte 1"),
-    (buwizz3, "20 41 00 42 00 00 00 00 00 00 00 00 00", "bad_padding", 3, "name", "set_device_name",
-     "set_device_name.name: non-zero byte after text terminator at byte 3"),
-    (buwizz3, "", "too_short", 0, None, None, "input too short at byte 0"),
-    (navbot, "55 AA 10 00 00 00 00 8A 00 01 00 00 00 00 00 00 00 00 00 00", "value_out_of_range", 7, "pitch", "maneuver",
-     "maneuver.pitch: value out of range (valid -100..100 %) at byte 7"),
-    (navbot, "55 AA 10 00 00 00 00 00 00 03 00 00 00 00 00 00 00 00 00 00", "invalid_enum", 9, "switch_a", "maneuver",
-     "maneuver.switch_a: value is not a valid code at byte 9"),
-    (navbot, "55 AA 10 01 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00", "bad_sequence", 3, None, "maneuver",
-     "maneuver: frame out of sequence at byte 3"),
-    (navbot, "54 AA 02 00 00" + " 00" * 15, "bad_header", 0, None, "frame", "frame: bad header byte at byte 0"),
-    (navbot, "55 AA 02 00", "too_short", 4, None, "frame",
-     "frame: input too short (20 bytes) at byte 4"),
-    (osp, "FF AA 02 12 D2 04 00 00 55 78", "bad_trailer", 9, None, "voltage", "voltage: bad trailer byte at byte 9"),
-    (osp, "FE AA 02 12 D2 04 00 00 55 77", "bad_header", 0, None, "voltage", "voltage: bad header byte at byte 0"),
-    (osp, "FF AA 02", "too_short", 3, None, "frame", "frame: input too short (10 bytes) at byte 3"),
-    (osp, "FF AA 02 12 D2 04 00 00 55", "too_short", 9, None, "voltage", "voltage: input too short (10 bytes) at byte 9"),
-    (osp, "FF AA 00 11 07 00 00 00 55 77", "invalid_enum", 4, "type", "device_type",
-     "device_type.type: value is not a valid code at byte 4"),
-    (osp, "FF AA 03 01 0A 0B 0C 0D 55 77", "unknown_message", 2, None, None, "unknown key 0x03 0x01 at byte 2"),
-    (buwizz3, "99", "unknown_message", 0, None, None, "unknown key 0x99 at byte 0"),
-])
-def test_decode_errors(module, hexs, code, offset, field, message, text):
-    e = decode_error(module.decode, bytes.fromhex(hexs))
-    assert (e.code, e.offset, e.field, e.message, str(e)) == (code, offset, field, message, text)
-    assert code in robowire.error_codes
+MODULES = {"buwizz3": buwizz3, "navbot": navbot, "osp": osp}
+
+
+@pytest.mark.parametrize("v", ERRORS, ids=[f"{v['protocol']}-{v['code']}-{v['hex'][:14]}" for v in ERRORS])
+def test_decode_errors(v):
+    """tests/vectors/vectors.json's errors: code, offset, field, message, describe_error's line."""
+    m = MODULES[v["protocol"]]
+    kwargs = {"direction": v["direction"]} if v["direction"] else {}
+    e = decode_error(m.decode, bytes.fromhex(v["hex"]), **kwargs)
+    assert (e.code, e.offset, e.field, e.message, str(e)) == (v["code"], v["offset"], v["field"], v["message"], v["error"])
+    assert v["code"] in robowire.error_codes
 
 
 def test_decode_error_notes():

@@ -2,6 +2,7 @@
 import pytest
 
 from robowire import DecodeError, EncodeError, navbot, osp
+from vectors import MULTIFRAME, OSP_SCAN, REASSEMBLY
 
 VOLTAGE = bytes.fromhex("FF AA 02 12 D2 04 00 00 55 77")   # 12.34 V
 STATUS = bytes.fromhex("FF AA 02 14 03 05 00 00 55 77")    # charging, low_voltage | overheat
@@ -121,3 +122,51 @@ def test_reassembler_byte_by_byte_is_frame_by_frame():
         with pytest.raises(DecodeError):
             r.push(frame[:n])
     assert r.push(frame) == ("complete", {"command": 2, "payload": b'{"a":1}' + bytes(8), "text": '{"a":1}'})
+
+
+@pytest.mark.parametrize("v", OSP_SCAN, ids=[v["hex"][:20] for v in OSP_SCAN])
+def test_scanner_vectors(v):
+    """tests/vectors/vectors.json: OSP frames found in noise, whole and byte by byte."""
+    for chunk in (1, len(bytes.fromhex(v["hex"]))):
+        s = osp.Scanner()
+        data = bytes.fromhex(v["hex"])
+        got = []
+        for i in range(0, len(data), chunk):
+            got += s.feed(data[i:i + chunk])
+        assert len(got) == len(v["records"])
+        for g, want in zip(got, v["records"]):
+            if "message" in want:
+                assert g["type"] == "message" and g["message"] == want["message"]
+                assert {k: g["fields"][k] for k in want["fields"]} == want["fields"]
+            else:
+                assert g["type"] == "error" and (g["error"], g["code"], g["offset"], g["bytes"]) == (
+                    want["error"], want["code"], want["offset"], want["bytes"])
+        assert s.frames == len(v["records"])
+
+
+@pytest.mark.parametrize("v", MULTIFRAME, ids=[v["text"][:20] for v in MULTIFRAME])
+def test_multiframe_vectors(v):
+    """tests/vectors/vectors.json: NAVBOT messages of several frames, fragmented and reassembled."""
+    frames = [bytes.fromhex(f) for f in v["frames"]]
+    assert navbot.fragment(v["command"], v["text"]) == frames
+    r = navbot.Reassembler()
+    outcomes = [r.push(f) for f in frames]
+    assert [o for o, _ in outcomes] == v["outcomes"]
+    assert outcomes[-1][1]["command"] == v["command"] and outcomes[-1][1]["text"] == v["text"]
+    assert r.json() == v["text"]
+
+
+@pytest.mark.parametrize("v", REASSEMBLY, ids=[v["source"][:40] for v in REASSEMBLY])
+def test_reassembly_vectors(v):
+    """tests/vectors/vectors.json: frame sequences (repeats, restarts, frames lost), the outcome of each frame."""
+    r = navbot.Reassembler()
+    for f, want in zip(v["frames"], v["outcomes"], strict=True):
+        if want == "error":
+            with pytest.raises(DecodeError) as e:
+                r.push(bytes.fromhex(f))
+            assert (e.value.code, e.value.offset) == (v["error"]["code"], v["error"]["offset"])
+            continue
+        outcome, message = r.push(bytes.fromhex(f))
+        assert outcome == want
+        if outcome == "complete":
+            assert message["text"] == v["text"]

@@ -1,4 +1,4 @@
-// The tool's fast number formatting (tools/emit.hpp: %g from the shortest
+// The tool's fast number formatting (tools/lib/emit.hpp: %g from the shortest
 // round-trip digits, whole numbers as integers) against the exact form
 // (std::to_chars with the precision, printf's %g): physical values of the
 // tables' scales over wide raw ranges, random doubles, random bit patterns.
@@ -9,7 +9,7 @@
 
 #include "emit.hpp"
 
-using namespace robowire::cli;
+using namespace robowire::tools;
 
 int main() {
     long bad = 0, n = 0;

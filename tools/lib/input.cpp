@@ -10,9 +10,9 @@
 #include <cerrno>
 #include <cstring>
 
-#include "cli.hpp"
+#include "tools.hpp"
 
-namespace robowire::cli {
+namespace robowire::tools {
 
 namespace {
 constexpr std::size_t block = 1 << 16;
@@ -231,4 +231,4 @@ std::string control_byte(std::string_view line) {
     return {};
 }
 
-}  // namespace robowire::cli
+}  // namespace robowire::tools

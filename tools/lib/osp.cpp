@@ -4,7 +4,7 @@
 #include "describe.hpp"
 #include "emit.hpp"
 
-namespace robowire::cli {
+namespace robowire::tools {
 namespace {
 namespace osp = robowire::osp;
 
@@ -52,4 +52,4 @@ const protocol& osp_protocol() {
     return p;
 }
 
-}  // namespace robowire::cli
+}  // namespace robowire::tools

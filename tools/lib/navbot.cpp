@@ -4,7 +4,7 @@
 #include "describe.hpp"
 #include "emit.hpp"
 
-namespace robowire::cli {
+namespace robowire::tools {
 namespace {
 namespace nb = robowire::navbot;
 
@@ -40,4 +40,4 @@ const protocol& navbot_protocol() {
     return p;
 }
 
-}  // namespace robowire::cli
+}  // namespace robowire::tools

@@ -1,8 +1,8 @@
 // The tool's protocols, in `list` order: the one place a new protocol's
 // tools/<protocol>.cpp is named.
-#include "cli.hpp"
+#include "tools.hpp"
 
-namespace robowire::cli {
+namespace robowire::tools {
 
 std::span<const protocol* const> protocols() {
     static const protocol* const all[] = {&buwizz3_protocol(), &navbot_protocol(), &osp_protocol()};
@@ -21,4 +21,4 @@ std::string protocol_names() {
     return out;
 }
 
-}  // namespace robowire::cli
+}  // namespace robowire::tools

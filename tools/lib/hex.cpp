@@ -2,9 +2,9 @@
 #include <array>
 #include <cstdio>
 
-#include "cli.hpp"
+#include "tools.hpp"
 
-namespace robowire::cli {
+namespace robowire::tools {
 namespace {
 // Per byte: 0-15 a hex digit's value, 16 a separator, 17 anything else.
 constexpr std::array<std::uint8_t, 256> classes = [] {
@@ -153,4 +153,4 @@ std::string hex_of(std::span<const std::uint8_t> bytes) {
     return s;
 }
 
-}  // namespace robowire::cli
+}  // namespace robowire::tools

@@ -16,10 +16,10 @@
 #include <type_traits>
 #include <variant>
 
-#include "cli.hpp"
 #include "text.hpp"
+#include "tools.hpp"
 
-namespace robowire::cli {
+namespace robowire::tools {
 
 // ---------------------------------------------------------------- small helpers
 inline std::string number(double v) {
@@ -539,4 +539,4 @@ inline outcome failure(int status, std::string error) {
     return o;
 }
 
-}  // namespace robowire::cli
+}  // namespace robowire::tools

@@ -14,7 +14,7 @@
 #include <type_traits>
 #include <vector>
 
-namespace robowire::cli {
+namespace robowire::tools {
 
 // "0x5C"
 inline std::string hex2(unsigned v) {
@@ -54,4 +54,4 @@ inline std::vector<std::string> sign_magnitude_notes(std::span<const std::uint8_
     return notes;
 }
 
-}  // namespace robowire::cli
+}  // namespace robowire::tools

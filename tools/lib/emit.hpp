@@ -14,10 +14,10 @@
 #include <type_traits>
 #include <variant>
 
-#include "cli.hpp"
 #include "text.hpp"
+#include "tools.hpp"
 
-namespace robowire::cli::emit {
+namespace robowire::tools::emit {
 
 template <class F>
 using element_t = typename F::element_type;
@@ -782,4 +782,4 @@ void variant_message(output& out, const record_meta& meta, std::string_view prot
     std::visit([&](const auto& m) { message(out, meta, protocol, m, notes); }, v);
 }
 
-}  // namespace robowire::cli::emit
+}  // namespace robowire::tools::emit

@@ -5,7 +5,7 @@
 #include "describe.hpp"
 #include "emit.hpp"
 
-namespace robowire::cli {
+namespace robowire::tools {
 namespace {
 namespace bw = robowire::buwizz3;
 
@@ -100,4 +100,4 @@ const protocol& buwizz3_protocol() {
     return p;
 }
 
-}  // namespace robowire::cli
+}  // namespace robowire::tools

@@ -1,7 +1,7 @@
 // BuWizz3 encode (its own translation unit: the 23 messages' encoders compile in parallel with the decoders).
 #include "describe.hpp"
 
-namespace robowire::cli {
+namespace robowire::tools {
 
 outcome buwizz3_encode(std::string_view message, const std::vector<std::pair<std::string, std::string>>& values) {
     namespace bw = robowire::buwizz3;
@@ -10,4 +10,4 @@ outcome buwizz3_encode(std::string_view message, const std::vector<std::pair<std
     return failure(exit_usage, "unknown message " + shorten(message) + " (robowire list buwizz3)");
 }
 
-}  // namespace robowire::cli
+}  // namespace robowire::tools

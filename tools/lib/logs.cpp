@@ -13,9 +13,9 @@
 #include <deque>
 #include <map>
 
-#include "cli.hpp"
+#include "tools.hpp"
 
-namespace robowire::cli {
+namespace robowire::tools {
 namespace {
 void err_line(const std::string& s) { std::fprintf(stderr, "%s\n", s.c_str()); }
 
@@ -764,4 +764,4 @@ int decode_lines(const protocol* p, input_stream& in, output& out, const log_opt
     return r.finish();
 }
 
-}  // namespace robowire::cli
+}  // namespace robowire::tools

@@ -1,10 +1,10 @@
-// `robowire list --json`: the tables as one JSON document (tools/schema.hpp,
+// `robowire list --json`: the tables as one JSON document (tools/lib/schema.hpp,
 // the same generator as Python's robowire.schema()).
-#include "cli.hpp"
 #include "schema.hpp"
+#include "tools.hpp"
 
-namespace robowire::cli {
+namespace robowire::tools {
 
 std::string list_json(std::string_view protocol) { return robowire::schema::all(protocol).dump(); }
 
-}  // namespace robowire::cli
+}  // namespace robowire::tools

@@ -1,5 +1,5 @@
 // The output formats of decode, scan and monitor and the buffer they write
-// into (see cli.hpp). Messages are written by emit.hpp; errors and counters here.
+// into (see tools.hpp). Messages are written by emit.hpp; errors and counters here.
 #include <nlohmann/json.hpp>
 
 #include <cerrno>
@@ -7,9 +7,9 @@
 #include <cstring>
 #include <memory>
 
-#include "cli.hpp"
+#include "tools.hpp"
 
-namespace robowire::cli {
+namespace robowire::tools {
 namespace {
 
 constexpr output_format formats[] = {
@@ -240,4 +240,4 @@ bool output::counters(const std::vector<std::pair<std::string, std::uint64_t>>& 
     return true;
 }
 
-}  // namespace robowire::cli
+}  // namespace robowire::tools
