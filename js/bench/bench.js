@@ -1,39 +1,27 @@
 // Decode of the 68-byte BuWizz3 status to an object and encode of
-// set_motor_data from an object, three ways in one run: the package
-// (WebAssembly), JavaScript generated from the tables (generate.js), and a
-// hand-written DataView codec (handwritten.js). Checks first that the three
-// give the same object and bytes, then prints ns per call and the ratio to
-// the hand-written code (the fastest of 9 interleaved rounds: the
-// least disturbed by other processes). A benchmark,
-// not a test: nothing fails on the figures.
-//   ROBOWIRE_CLI=path/to/robowire node bench/bench.js [--rounds N]
+// set_motor_data from an object, two ways in one run: the package (JavaScript
+// generated from the tables, lib/buwizz3.js) and a hand-written DataView
+// codec (handwritten.js). Checks first that both give the same object and
+// bytes, then prints ns per call and the ratio to the hand-written code (the
+// fastest of 9 interleaved rounds: the least disturbed by other processes).
+// A benchmark, not a test: nothing fails on the figures.
+//   node bench/bench.js [--rounds N]
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
 
 import { buwizz3 } from '../index.js';
 import { bytes, status68 } from '../test/vectors.js';
-import { generateDecoder, generateEncoder } from './generate.js';
 import { decodeStatus, encodeSetMotorData } from './handwritten.js';
-
-const cli = process.env.ROBOWIRE_CLI;
-if (!cli) throw new Error('set ROBOWIRE_CLI to the robowire tool (for list --json buwizz3)');
-const schema = JSON.parse(execFileSync(cli, ['list', '--json', 'buwizz3'], { encoding: 'utf8' }));
-const messages = schema.protocols[0].messages;
-const find = (name, direction) => messages.find((m) => m.name === name && m.direction === direction);
-const genDecode = generateDecoder(find('status', 'notification'));
-const genEncode = generateEncoder(find('set_motor_data', 'command'));
 
 const frame = bytes(status68);
 const motor = { power: [64, -64, 127, -127, 0, 1], brake_flags: 0x21, lut_disable_flags: 0 };
 const routes = {
   'hand-written DataView': { decode: (b) => decodeStatus(b), encode: (f) => encodeSetMotorData(f) },
-  'generated from tables': { decode: (b) => genDecode(b), encode: (f) => genEncode(f) },
-  'WebAssembly (package)': {
+  'generated (package)': {
     decode: (b) => buwizz3.decode(b, { direction: 'notification' }),
     encode: (f) => buwizz3.encode('set_motor_data', f),
   },
 };
-const expected = routes['WebAssembly (package)'];
+const expected = routes['generated (package)'];
 for (const [name, r] of Object.entries(routes)) {
   assert.deepEqual(r.decode(frame), expected.decode(frame), name);
   assert.deepEqual(r.encode(motor), expected.encode(motor), name);

@@ -67,12 +67,13 @@ test('decode errors: the tool\'s line, code, offset, field, message', () => {
   });
   // a status cut inside its PID block (54 or 68..129 bytes)
   throws(() => buwizz3.decode(bytes(status68).subarray(0, 60)), {
-    code: 'bad_length', offset: 54, field: null, messageName: 'status',
+    message: 'status.pid_state: length matches no form of the message (54 or 68..129 bytes) at byte 54',
+    code: 'bad_length', offset: 54, field: 'pid_state', messageName: 'status',
   });
   throws(() => buwizz3.decode(bytes('01 00')), { code: 'too_short', field: null, messageName: 'status' });
   throws(() => buwizz3.decode(bytes('7E 00')), {
     message: 'unknown key 0x7E at byte 0',
-    code: 'bad_command', messageName: null,
+    code: 'unknown_message', offset: 0, messageName: null,
   });
   throws(() => buwizz3.decode(new Uint8Array(0)), { code: 'too_short', offset: 0 });
   // 0xAC alone fits the command and the notification: a usage error, no code

@@ -26,17 +26,9 @@ for (const v of data.messages) {
   });
 }
 
-// The BuWizz3-only package (no navbot, no osp export) names an unknown key bad_command and gives a
-// length error no field: the library's codes are unknown_message and the optional block's field.
-const legacy = !codec('navbot') && !codec('osp');
-const todo = (v) =>
-  legacy && (v.code === 'unknown_message' || v.code === 'bad_length')
-    ? 'the BuWizz3-only package: bad_command for unknown_message, no field for bad_length'
-    : false;
-
 for (const v of data.errors) {
   const name = `${v.protocol} error ${v.code} at ${v.offset}: ${v.hex.slice(0, 23)}`;
-  test(name, { skip: missing(v.protocol), todo: todo(v) }, () => {
+  test(name, { skip: missing(v.protocol) }, () => {
     assert.throws(() => codec(v.protocol).decode(bytes(v.hex), options(v)), (e) => {
       assert.ok(e instanceof robowire.RobowireError, `${e}`);
       assert.equal(e.message, v.error);

@@ -39,7 +39,7 @@ def test_schema_against_the_documents():
     m = message("buwizz3", "status")
     assert (m["direction"], m["lengths"]) == ("notification", [[54, 54], [68, 129]])
     by_name = {f["name"]: f for f in m["fields"]}
-    assert by_name["battery_voltage_raw"]["unit"] == {"name": "V", "scale": 0.05, "offset": 9.0}
+    assert by_name["battery_voltage_raw"]["unit"] == {"name": "V", "scale": 0.05, "offset": 9.0, "raw_is_physical": False}
     pu = by_name["pu_motors"]
     assert (pu["offset"], pu["count"], pu["element_size"], pu["type"]) == (22, 4, 8, "record")
     assert [f["name"] for f in pu["record"]["fields"]] == ["type", "velocity", "absolute_position", "position"]
@@ -108,3 +108,32 @@ def test_decode_errors_name_what_the_cli_names(cli, proto, hexs):
         MODULES[proto].decode(bytes.fromhex(hexs))
     # both name the error, the byte and the field
     assert f"at byte {e.value.offset}" in cli_error and e.value.field in cli_error
+
+
+def test_schema_version_2_against_the_documents():
+    s = robowire.schema()
+    assert (s["format"], s["schema_version"]) == (1, 2)
+    bw, nb, op = s["protocols"]
+    # BuWizz3: byte 0 is the command; 0x40 UART baudrate setup carries "0x40 - send command" at byte 1,
+    # which the dispatcher does not read: the key is byte 0 alone
+    # one characteristic, 0x2901 in the service UUID 500592d1-74fb-4481-88b3-9919b1676e93, write + notify
+    assert [(c["uuid"], c["carries"]) for c in bw["characteristics"]] == [
+        ("50052901-74fb-4481-88b3-9919b1676e93", "both")]
+    assert bw["key_offsets"] == [0] and message("buwizz3", "set_uart_baudrate")["key"] == [0x40]
+    # NAVBOT: 55 AA then the command byte (index 2); write 6E400012, notify 6E400013
+    assert nb["key_offsets"] == [2] and message("navbot", "maneuver")["key"] == [0x10]
+    assert [(c["uuid"], c["carries"]) for c in nb["characteristics"]] == [
+        ("6e400012-b5a3-f393-e0a9-e50e24dcca9e", "to_device"),
+        ("6e400013-b5a3-f393-e0a9-e50e24dcca9e", "from_device")]
+    assert nb["frame"]["name"] == "frame" and nb["frame"]["lengths"] == [[20, 20]]
+    assert [(b["offset"], b["value"]) for b in nb["frame"]["fixed"]] == [(0, 0x55), (1, 0xAA)]
+    # OSP: FF AA DEV CMD P1..P4 55 77 on a serial line, no GATT
+    assert (op["key_offsets"], op["characteristics"], op["stream"]) == ([2, 3], [], "scanner")
+    assert [(b["offset"], b["value"]) for b in op["frame"]["fixed"]] == [(0, 0xFF), (1, 0xAA), (8, 0x55), (9, 0x77)]
+    # physical values: battery_voltage_raw -> battery_voltage; a bool is 0 or 1
+    status = {f["name"]: f for f in message("buwizz3", "status")["fields"]}
+    assert status["battery_voltage_raw"]["physical"] == "battery_voltage"
+    assert status["flags"]["physical"] is None
+    bools = [f for m in bw["messages"] for f in m["fields"] if f["value"] == "bool"]
+    assert bools and all(f["valid"] == {"min": 0, "max": 1} for f in bools)
+    assert "15 significant digits" in s["output"]["physical"]

@@ -1,30 +1,10 @@
 // The protocols' tables as one JSON document (nlohmann/json): what
 // `robowire list --json` prints and `robowire.schema()` returns in Python.
 // Built from table_v, enum_table_v and flag_bits_v of each protocol's
-// std::variant of messages, so a message added to a protocol appears here
-// with no change. Format (every key always present unless marked):
-//
-//   {"format": 1, "protocols": [
-//     {"name": "buwizz3", "summary": "...", "messages": [
-//       {"name": "set_motor_data", "direction": "command" | "notification" | null,
-//        "key": [48],                  // the bytes that select the message (command; OSP: DEV, CMD)
-//        "fixed": [{"offset": 0, "value": 48, "error": "bad_command"}],
-//        "lengths": [[9, 9]],          // accepted input lengths, as runs [first, last]
-//        "min_size": 9, "max_size": 9, "max_input": 9,
-//        "fields": [FIELD...]}]}],
-//    "errors": [{"code": 0, "name": "ok", "text": "ok"}, ...]}   // robowire::errc_table
-//
-//   FIELD: {"name", "offset", "type" (wire type: u8 i8 u16le i16le u32le i32le
-//           f32le bits text tail record), "value" (the decoded value's kind:
-//           int float bool enum text bytes record), "count" (1 unless
-//           "array"), "array", "optional", "element_size", "size",
-//           "valid": {"min", "max"} | null (int and bits fields),
-//           "unit": {"name", "scale", "offset"} | null,
-//           "bits": {"lo", "width"} (bits fields only),
-//           "enum": [{"name", "value"}...] (enum fields only),
-//           "flag_bits": [{"lo", "width", "name", "values"}...] (flag bytes only),
-//           "capacity" (text and tail fields only),
-//           "record": {"name", "size", "fields": [FIELD...]} (record fields only)}
+// std::variant of messages and from its descriptor, so a message added to a
+// protocol appears here with no change. The format, and the rules a decoder
+// in another language follows to give what `decode --json` gives:
+// docs/cli.md (list). The JavaScript package is generated from it (js/gen).
 #pragma once
 
 #include <robowire/core/fields.hpp>
@@ -35,6 +15,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include <robowire/buwizz3/protocol.hpp>
+#include <robowire/navbot/protocol.hpp>
+#include <robowire/osp/protocol.hpp>
+
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -46,6 +31,9 @@ namespace robowire::schema {
 using json = nlohmann::ordered_json;
 
 inline constexpr int format_version = 1;
+// Version 2: key_offsets, bool ranges, physical names, raw_is_physical,
+// characteristics, direction rules, output and error-line rules.
+inline constexpr int schema_version = 2;
 
 // Name of an error code as the schema and the Python package spell it
 // (robowire::errc_table, which also gives the count).
@@ -78,10 +66,21 @@ json field_of(const F& f) {
         {"count", F::count}, {"array", F::is_array}, {"optional", F::is_optional}, {"element_size", F::element_size},
         {"size", F::size}};
     if constexpr (F::kind == wire_kind::bits) j["bits"] = {{"lo", F::wire_type::lo}, {"width", F::wire_type::width}};
-    const bool ranged = value_kind<F>() == "int";
+    const bool ranged = value_kind<F>() == "int" || value_kind<F>() == "bool";
     j["valid"] = ranged ? json{{"min", f.valid.min}, {"max", f.valid.max}} : json(nullptr);
     j["unit"] = f.unit.name.empty() ? json(nullptr)
-                                    : json{{"name", f.unit.name}, {"scale", f.unit.scale}, {"offset", f.unit.offset}};
+                                    : json{{"name", f.unit.name},
+                                           {"scale", f.unit.scale},
+                                           {"offset", f.unit.offset},
+                                           {"raw_is_physical", f.unit.raw_is_physical}};
+    // the decoded physical value's key (integer fields with a unit): "x_raw" -> "x", else "x_physical"
+    if (value_kind<F>() == "int" && !f.unit.name.empty()) {
+        const std::string_view n = f.name;
+        const bool raw = n.size() > 4 && n.substr(n.size() - 4) == "_raw";
+        j["physical"] = raw ? std::string(n.substr(0, n.size() - 4)) : std::string(n) + "_physical";
+    } else {
+        j["physical"] = nullptr;
+    }
     if constexpr (std::is_enum_v<E>) {
         json values = json::array();
         for (const auto& e : enum_table_v<E>)
@@ -111,13 +110,14 @@ json fields_of() {
 }
 
 template <class M>
-json message_of(std::string_view direction) {
+json message_of(std::string_view direction, std::initializer_list<std::size_t> key_offsets) {
     constexpr auto& t = table_v<M>;
     json fixed = json::array(), key = json::array();
-    for (const auto& b : t.fixed) {
+    for (const auto& b : t.fixed)
         fixed.push_back({{"offset", b.offset}, {"value", b.value}, {"error", errc_name(b.code)}});
-        if (b.code == errc::bad_command || b.code == errc::bad_device) key.push_back(b.value);
-    }
+    for (const std::size_t o : key_offsets)  // the bytes the dispatcher reads, at the protocol's key_offsets
+        for (const auto& b : t.fixed)
+            if (b.offset == o) key.push_back(b.value);
     json lengths = json::array();
     constexpr auto& runs = detail::length_runs_v<M>;
     for (std::size_t i = 0; i < runs.count; ++i) lengths.push_back({runs.run[i][0], runs.run[i][1]});
@@ -134,13 +134,42 @@ json message_of(std::string_view direction) {
 
 // Appends every alternative of variant V to `messages`.
 template <class V>
-void add_messages(json& messages, std::string_view direction = {}) {
-    for_each_alternative<V>([&](auto t) { messages.push_back(message_of<typename decltype(t)::type>(direction)); });
+void add_messages(json& messages, std::initializer_list<std::size_t> key_offsets, std::string_view direction = {}) {
+    for_each_alternative<V>(
+        [&](auto t) { messages.push_back(message_of<typename decltype(t)::type>(direction, key_offsets)); });
 }
 
-// One protocol's entry, around its messages (add_messages).
-inline json protocol_entry(std::string_view name, std::string_view summary, json messages) {
-    return {{"name", name}, {"summary", summary}, {"messages", std::move(messages)}};
+inline std::string_view carries_name(gatt_direction d) {
+    switch (d) {
+    case gatt_direction::to_device: return "to_device";
+    case gatt_direction::from_device: return "from_device";
+    default: return "both";
+    }
+}
+inline std::string_view stream_name(stream_kind k) {
+    switch (k) {
+    case stream_kind::scanner: return "scanner";
+    case stream_kind::reassembler: return "reassembler";
+    default: return "none";
+    }
+}
+
+// One protocol's entry, around its messages (add_messages): key_offsets are
+// the bytes its dispatcher reads (a message's "key" holds its values there).
+inline json protocol_entry(const protocol_descriptor& d, std::string_view summary, json key_offsets, json messages) {
+    json chars = json::array();
+    for (const auto& c : d.characteristics) {
+        const auto u = c.uuid.to_chars();
+        chars.push_back(
+            {{"uuid", std::string(u.data(), u.size())}, {"carries", carries_name(c.carries)}, {"label", c.label}});
+    }
+    return {{"name", d.name},
+            {"summary", summary},
+            {"characteristics", std::move(chars)},
+            {"stream", stream_name(d.stream)},
+            {"key_offsets", std::move(key_offsets)},
+            {"frame", nullptr},
+            {"messages", std::move(messages)}};
 }
 
 // The whole document around protocol entries.
@@ -151,26 +180,63 @@ inline json errors() {
         e.push_back({{"code", static_cast<int>(row.code)}, {"name", row.name}, {"text", row.text}});
     return e;
 }
+// How decode's JSON prints numbers and how an error line is built.
+inline json output_rules() {
+    return {
+        {"float", "an f32 field: the float's value as a double, shortest text that reads back; NaN and infinity: null"},
+        {"physical",
+         "raw * scale + offset in double, rounded to 15 significant digits; key \"physical\", "
+         "{\"value\": v or [v...], \"unit\": name}"},
+        {"flag_bits", "\"<field>_bits\": {name: true/false (width 1) or values[v] (else the number as text)}"},
+        {"bytes", "tail fields: upper-case hex text, a space between bytes (\"0B 0C\")"},
+        {"error_line",
+         "<message>[.<field>]: <text>[ (<lengths>)][ (valid <min>..<max>[ <unit>| raw])] at byte <offset>; "
+         "the field: the first top-level field whose bytes hold the offset (none for too_short and too_long); "
+         "lengths for too_short, too_long and bad_length: runs \"a..b\" joined by \", \" and a last \" or \", "
+         "then \" byte\"/\" bytes\"; the range for value_out_of_range of int, bool and bits fields, unit when "
+         "raw_is_physical, else \"raw\"; a key no message has: \"unknown key 0x3A[ 0x01]\" (hex of each "
+         "key byte)[: <text> unless unknown_message] at byte <offset>; input not reaching the key: "
+         "\"<text> at byte <offset>\""}};
+}
 inline json document(json protocols) {
-    return {{"format", format_version}, {"protocols", std::move(protocols)}, {"errors", errors()}};
+    return {{"format", format_version},
+            {"schema_version", schema_version},
+            {"protocols", std::move(protocols)},
+            {"errors", errors()},
+            {"output", output_rules()}};
 }
 
 // Each protocol: its message lists (the std::variants the dispatchers decode).
 inline json buwizz3_entry() {
     json m = json::array();
-    add_messages<buwizz3::command>(m, "command");
-    add_messages<buwizz3::notification>(m, "notification");
-    return protocol_entry("buwizz3", "BLE; byte 0 = command", std::move(m));
+    add_messages<buwizz3::command>(m, {0}, "command");
+    add_messages<buwizz3::notification>(m, {0}, "notification");
+    json e = protocol_entry(buwizz3::descriptor, "BLE; byte 0 = command", {0}, std::move(m));
+    // byte 0 that both directions use (0x23, 0xAC) without a direction given
+    e["direction_rule"] =
+        "the direction whose message byte 0 names; both: the one whose min_size..max_input holds the length; "
+        "both or neither: a direction must be given";
+    return e;
 }
 inline json navbot_entry() {
     json m = json::array();
-    add_messages<navbot::message>(m);
-    return protocol_entry("navbot", "BLE; 20-byte frames: 55 AA command remaining 00, 15 payload bytes", std::move(m));
+    add_messages<navbot::message>(m, {2});
+    // frames of the JSON command also show their payload as text, up to its first zero byte
+    for (auto& msg : m)
+        for (auto& f : msg["fields"])
+            if (msg["name"] == "frame" && f["name"] == "payload")
+                f["as_text_when"] = {{"field", "command"}, {"value", navbot::command::json}};
+    json e = protocol_entry(navbot::descriptor, "BLE; 20-byte frames: 55 AA command remaining 00, 15 payload bytes",
+                            {2}, std::move(m));
+    e["frame"] = message_of<navbot::frame>({}, {});  // decoded first; a command no message has stays a frame
+    return e;
 }
 inline json osp_entry() {
     json m = json::array();
-    add_messages<osp::message>(m);
-    return protocol_entry("osp", "serial; FF AA DEV CMD P1..P4 55 77", std::move(m));
+    add_messages<osp::message>(m, {2, 3});
+    json e = protocol_entry(osp::descriptor, "serial; FF AA DEV CMD P1..P4 55 77", {2, 3}, std::move(m));
+    e["frame"] = message_of<osp::frame>({}, {});  // markers and length, checked first
+    return e;
 }
 // Every protocol, or the one named (an empty "protocols" list for an unknown name).
 inline json all(std::string_view only = {}) {

@@ -1,0 +1,450 @@
+// What the generated codecs (buwizz3.js, navbot.js, osp.js) share: the
+// error class, error lines, hex text and number printing. Hand-written.
+
+// A message that cannot be decoded or encoded. `message`: the command-line
+// tool's error line; `code`: the error code's name ("value_out_of_range"; null
+// for a usage error); `offset`: the byte; `field`: the field at that byte or
+// null; `messageName`: the message it was read or written as, or null.
+export class RobowireError extends Error {
+  constructor(text, { code = null, offset = null, field = null, messageName = null } = {}) {
+    super(text);
+    this.name = 'RobowireError';
+    this.code = code;
+    this.offset = offset;
+    this.field = field;
+    this.messageName = messageName;
+  }
+}
+
+const HEX = Array.from({ length: 256 }, (_, i) => i.toString(16).toUpperCase().padStart(2, '0'));
+// Upper-case hex, a space between bytes (tail fields): "0B 0C 0D".
+export function hex(b, from = 0, to = b.length) {
+  const parts = [];
+  for (let i = from; i < to; ++i) parts.push(HEX[b[i]]);
+  return parts.join(' ');
+}
+// A physical value: rounded to 15 significant digits (13.000000000000002 -> 13).
+export function tidy(v) {
+  return Number.isFinite(v) ? Number(v.toPrecision(15)) : null;
+}
+// An f32 value: the float as is; NaN and infinity: null.
+export function f32(dv, o) {
+  const v = dv.getFloat32(o, true);
+  return Number.isFinite(v) ? v : null;
+}
+const utf8 = new TextDecoder('utf-8');
+// Text of bytes [from, to) (invalid UTF-8: U+FFFD).
+export function text(b, from, to) {
+  return utf8.decode(b.subarray(from, to));
+}
+// Bytes as a Uint8Array over the same memory.
+export function bytesOf(x) {
+  if (x instanceof Uint8Array) return x;
+  if (x instanceof ArrayBuffer) return new Uint8Array(x);
+  if (ArrayBuffer.isView(x)) return new Uint8Array(x.buffer, x.byteOffset, x.byteLength);
+  throw new TypeError('decode: bytes must be a Uint8Array, ArrayBuffer or DataView');
+}
+
+// An error of message `m` (its generated info: name, lengths text, fields as
+// [offset, end, name, ranged, min, max, unit suffix]) at byte `offset`.
+export class Fail {
+  constructor(code, offset) {
+    this.code = code;
+    this.offset = offset;
+  }
+}
+export function fail(code, offset) {
+  throw new Fail(code, offset);
+}
+export function messageError(errors, m, code, offset) {
+  const length = code === 'too_short' || code === 'too_long';
+  let f = null;
+  for (const x of m.fields) {
+    if (x[0] === x[1] ? offset === x[0] : offset >= x[0] && offset < x[1]) {
+      f = x;
+      break;
+    }
+  }
+  let line = m.name;
+  if (f && !length) line += `.${f[2]}`;
+  line += `: ${errors[code]}`;
+  if (length || code === 'bad_length') line += ` (${m.lengths})`;
+  if (f && f[3] && code === 'value_out_of_range') line += ` (valid ${f[4]}..${f[5]}${f[6]})`;
+  line += ` at byte ${offset}`;
+  return new RobowireError(line, { code, offset, field: f && !length ? f[2] : null, messageName: m.name });
+}
+export function keyError(errors, key, code, offset) {
+  let line = 'unknown key';
+  for (const k of key) line += ` 0x${k.toString(16).toUpperCase().padStart(2, '0')}`;
+  if (code !== 'unknown_message') line += `: ${errors[code]}`;
+  return new RobowireError(`${line} at byte ${offset}`, { code, offset });
+}
+export function plainError(errors, code, offset) {
+  return new RobowireError(`${errors[code]} at byte ${offset}`, { code, offset });
+}
+
+// ---- encode, from a message's table (generated ENC entries)
+const utf8out = new TextEncoder();
+const setters = { u16le: 'setUint16', i16le: 'setInt16', u32le: 'setUint32', i32le: 'setInt32', f32le: 'setFloat32' };
+// The keys a record's object may hold: its fields and what decode adds to them.
+const knownKeys = new WeakMap();
+function keysOf(fields) {
+  let k = knownKeys.get(fields);
+  if (k === undefined) {
+    k = new Set(fields.flatMap((f) => [f.name, `${f.name}_bits`, `${f.name}_text`, ...(f.physical ? [f.physical] : [])]));
+    knownKeys.set(fields, k);
+  }
+  return k;
+}
+function bad(ctx, code, o, path) {
+  throw Object.assign(messageError(ctx.E, ctx.info, code, o), { field: path });
+}
+function put(ctx, f, v, o, path) {
+  const { out, dv } = ctx;
+  if (f.type === 'record') return putRecord(ctx, f.record, v ?? {}, o, path);
+  if (f.type === 'text') {
+    if (v === undefined || v === null) v = '';
+    if (typeof v !== 'string') throw new TypeError(`encode: ${path}: text expected`);
+    const t = utf8out.encode(v);
+    if (t.length > f.capacity || t.includes(0)) bad(ctx, 'value_out_of_range', o, path);
+    out.set(t, o);
+    return;
+  }
+  if (f.type === 'tail') return;  // written by encodeMessage (it sets the length)
+  if (f.type === 'f32le') {
+    dv.setFloat32(o, v === undefined || v === null ? NaN : Number(v), true);
+    if (v === undefined) dv.setFloat32(o, 0, true);
+    return;
+  }
+  let raw;
+  if (v === undefined) raw = f.enum ? Object.values(f.enum)[0] ?? 0 : 0;
+  else if (typeof v === 'boolean') raw = v ? 1 : 0;
+  else if (typeof v === 'string' && f.enum) {
+    raw = f.enum[v];
+    if (raw === undefined) bad(ctx, 'invalid_enum', o, path);
+  } else raw = Number(v);
+  if (!Number.isInteger(raw)) throw new TypeError(`encode: ${path}: an integer expected, not ${String(v)}`);
+  if (f.enum) {
+    if (!Object.values(f.enum).includes(raw)) bad(ctx, 'invalid_enum', o, path);
+  } else if (f.valid && (raw < f.valid.min || raw > f.valid.max)) {
+    bad(ctx, 'value_out_of_range', o, path);
+  }
+  if (f.type === 'bits') {
+    const m = ((1 << f.bits.width) - 1) << f.bits.lo;
+    out[o] = (out[o] & ~m) | ((raw << f.bits.lo) & m);
+  } else if (f.element_size === 1) {
+    out[o] = raw & 0xff;
+  } else {
+    dv[setters[f.type]](o, raw, true);
+  }
+}
+function putRecord(ctx, fields, obj, base, path) {
+  if (obj === null || typeof obj !== 'object' || Array.isArray(obj)) throw new TypeError(`encode: ${path}: an object expected`);
+  const known = keysOf(fields);
+  for (const k in obj)
+    if (!known.has(k))
+      throw new RobowireError(`unknown field ${path ? `${path}.` : ''}${k} (fields: ${fields.map((f) => f.name).join(', ')})`,
+        { messageName: ctx.info.name });
+  for (const f of fields) {
+    const v = obj[f.name];
+    const o = base + f.offset;
+    const p = path ? `${path}.${f.name}` : f.name;
+    if (f.optional && (v === undefined || v === null)) continue;
+    if (f.array) {
+      const a = v ?? [];
+      if (!Array.isArray(a) && !(a instanceof Uint8Array)) throw new TypeError(`encode: ${p}: an array of ${f.count} expected`);
+      if (v !== undefined && a.length !== f.count)
+        throw new RobowireError(`${p}: ${a.length} values given, ${f.count} expected${path ? '' : ` (${p}=v1,...,v${f.count})`}`, { messageName: ctx.info.name, field: p });
+      for (let i = 0; i < f.count; ++i) put(ctx, f, a[i], o + i * f.element_size, `${p}[${i}]`);
+    } else {
+      put(ctx, f, v, o, p);
+    }
+  }
+}
+function tailBytes(v) {
+  if (v === undefined || v === null) return new Uint8Array(0);
+  if (typeof v === 'string') {
+    const s = v.replace(/\s+/g, '');
+    if (!/^([0-9a-fA-F]{2})*$/.test(s)) throw new TypeError('encode: bytes as hex text expected');
+    return Uint8Array.from(s.match(/../g) ?? [], (x) => parseInt(x, 16));
+  }
+  return Uint8Array.from(v);
+}
+export function encodeMessage(E, protocol, table, infos, message, fields = {}) {
+  if (message !== null && typeof message === 'object') {  // what decode returns
+    if (message.protocol !== undefined && message.protocol !== protocol)
+      throw new RobowireError(`encode: a ${message.protocol} message, not ${protocol}`);
+    fields = message.fields ?? {};
+    message = message.message;
+  }
+  if (typeof message !== 'string') throw new TypeError('encode: message must be a name (string)');
+  if (fields === null || typeof fields !== 'object') throw new TypeError('encode: fields must be an object');
+  const i = table.findIndex((m) => m.name === message);
+  if (i < 0) throw new RobowireError(`unknown message ${message} (robowire list ${protocol})`);
+  const m = table[i];
+  let size = m.min_size;
+  let tail = null;
+  for (const f of m.fields) {
+    const v = fields[f.name];
+    if (f.optional && v !== undefined && v !== null) size = Math.max(size, f.offset + f.size);
+    if (f.type === 'tail') {
+      tail = [f, tailBytes(v)];
+      if (tail[1].length > f.capacity)
+        throw messageError(E, infos[i], 'too_long', f.offset + f.capacity);
+      size = Math.max(size, f.offset + tail[1].length);
+    }
+  }
+  const out = new Uint8Array(size);
+  const ctx = { out, dv: new DataView(out.buffer), E, info: infos[i] };
+  for (const [o, v] of m.fixed) if (o < size) out[o] = v;
+  putRecord(ctx, m.fields, fields, 0, '');
+  if (tail) out.set(tail[1], tail[0].offset);
+  return out;
+}
+
+// ---- serial streams: frames found in a byte stream (OSP's scanner)
+// A frame: `size` bytes with fixed bytes [[offset, value]...], the first at 0.
+// A candidate that breaks a fixed byte is dropped up to the next start byte.
+export class FrameScanner {
+  constructor(size, fixed, decode, protocol) {
+    this.size = size;
+    this.fixed = fixed;
+    this.decodeFrame = decode;
+    this.protocol = protocol;
+    this.buf = new Uint8Array(size);
+    this.len = 0;
+    this.counters = { frames: 0, skipped_bytes: 0, false_starts: 0 };
+  }
+  partialOk() {
+    for (const [o, v] of this.fixed) if (o < this.len && this.buf[o] !== v) return false;
+    return true;
+  }
+  resync() {
+    const start = this.fixed[0][1];
+    for (;;) {
+      ++this.counters.false_starts;
+      let from = 1;
+      while (from < this.len && this.buf[from] !== start) ++from;
+      this.counters.skipped_bytes += from;
+      this.buf.copyWithin(0, from, this.len);
+      this.len -= from;
+      if (this.partialOk()) return;
+    }
+  }
+  // Feeds bytes; returns the records of the frames they complete: decoded
+  // messages, or {type:'error', error, protocol, bytes} (as `robowire scan`).
+  push(bytes) {
+    const b = bytesOf(bytes);
+    const out = [];
+    const start = this.fixed[0][1];
+    for (let i = 0; i < b.length; ++i) {
+      const x = b[i];
+      if (this.len === 0) {
+        if (x === start) this.buf[this.len++] = x;
+        else ++this.counters.skipped_bytes;
+        continue;
+      }
+      const k = this.len++;
+      this.buf[k] = x;
+      const f = this.fixed.find(([o]) => o === k);
+      if (f && f[1] !== x) {
+        this.resync();
+      } else if (k === this.size - 1) {
+        this.len = 0;
+        ++this.counters.frames;
+        const frame = this.buf.slice();
+        try {
+          out.push(this.decodeFrame(frame));
+        } catch (e) {
+          if (!(e instanceof RobowireError)) throw e;
+          out.push({ type: 'error', error: e.message, protocol: this.protocol, bytes: hex(frame) });
+        }
+      }
+    }
+    return out;
+  }
+}
+
+// ---- messages over several fixed-size frames (NAVBOT): the library's
+// reassembler (navbot/multiframe.hpp) and what `robowire scan` says of each frame.
+const outcomeText = {
+  need_more: 'part of a message, more frames to come',
+  complete: 'message complete',
+};
+// The frame layout: command, remaining and payload offsets, payload size.
+export class FrameReassembler {
+  constructor(layout, decode, decodeFrame, protocol, errors) {
+    Object.assign(this, { layout, decodeMessage: decode, decodeFrame, protocol, errors });
+    this.buf = [];
+    this.state = 'idle';
+    this.last = null;  // the last frame of a multi-frame message: [command, remaining, payload hex]
+    this.lastRemaining = 0;
+    this.command = 0;
+    this.skipping = false;
+    this.skipCommand = 0;
+    this.pushes = 0;
+    this.lines = [];  // frames (push numbers) of the message in progress
+    this.seenRemaining = 0;
+    this.counters = { messages_reassembled: 0, duplicates: 0, restarted: 0, discarded: 0, reassembly_errors: 0 };
+  }
+  // Pushes one frame; returns its records as `robowire scan navbot --json`
+  // prints them ("line": the frame's number, from 1): the decoded message or
+  // its error, then what reassembly says of it (none for a one-frame message).
+  push(bytes) {
+    const b = bytesOf(bytes);
+    const line = ++this.pushes;
+    const out = [];
+    try {
+      out.push(this.decodeMessage(b));
+    } catch (e) {
+      if (!(e instanceof RobowireError)) throw e;
+      const h = hex(b);
+      out.push({ type: 'error', error: e.message, protocol: this.protocol,
+        bytes: h.length > 200 ? `${h.slice(0, 200)} ... (${h.length} characters)` : h });
+    }
+    let f;
+    try {
+      f = this.decodeFrame(b);
+    } catch (e) {
+      if (!(e instanceof RobowireError)) throw e;
+      return out;
+    }
+    const { command: co, remaining: ro, payload: po, payload_size: ps } = this.layout;
+    const frame = { command: b[co], remaining: b[ro], payload: b.slice(po, po + ps) };
+    const r = this.step(frame);
+    const before = this.seenRemaining;
+    this.seenRemaining = frame.remaining;
+    const rec = { type: 'reassembly' };
+    if (typeof r !== 'string') {
+      ++this.counters.reassembly_errors;
+      let dropped = '';
+      if (this.lines.length)
+        dropped = `; the partial message (line${this.lines.length > 1 ? 's ' : ' '}${this.lines[0]}${this.lines.length > 1 ? `-${this.lines[this.lines.length - 1]}` : ''}) is dropped`;
+      this.lines = [];
+      if (frame.remaining !== 0 && r.code === 'command_changed') this.lines.push(line);
+      let note = `${this.errors[r.code]} at byte ${r.offset}`;
+      if (r.code === 'bad_sequence') note += `: remaining ${frame.remaining} after ${before}, frames were lost`;
+      if (r.code === 'command_changed') note += ': a frame of another multi-frame message';
+      rec.outcome = 'error';
+      rec.error = note + dropped;
+    } else {
+      rec.outcome = r;
+      if (r === 'need_more') this.lines.push(line);
+      else if (r === 'restarted') { ++this.counters.restarted; this.lines = [line]; }
+      else if (r === 'duplicate') ++this.counters.duplicates;
+      else if (r === 'discarded') ++this.counters.discarded;
+      else if (r === 'complete') {
+        this.lines.push(line);
+        if (this.lines.length < 2) {
+          this.lines = [];
+          return out;
+        }
+        ++this.counters.messages_reassembled;
+        let n = this.buf.length;
+        while (n > 0 && this.buf[n - 1] === 0) --n;
+        const t = Uint8Array.from(this.buf.slice(0, n));
+        rec.command = frame.command;
+        rec.lines = this.lines;
+        rec.text = text(t, 0, t.length);
+        rec.json_object = jsonObject(t);
+        this.lines = [];
+      }
+    }
+    out.push(rec);
+    return out;
+  }
+  same(f) {
+    const l = this.last;
+    return l !== null && l.command === f.command && l.remaining === f.remaining && l.payload.every((x, i) => x === f.payload[i]);
+  }
+  step(f) {
+    if (this.same(f)) return 'duplicate';
+    if (this.state === 'complete') { this.state = 'idle'; this.buf = []; }
+    if (this.skipping && f.command === this.skipCommand) {
+      if (f.remaining === 0) this.skipping = false;
+      this.last = f;
+      return 'discarded';
+    }
+    if (this.state === 'idle') return this.start(f);
+    if (f.command !== this.command) {
+      if (f.remaining === 0) return 'single';
+      const broken = this.command;
+      const st = this.start(f);
+      if (typeof st !== 'string') return st;
+      this.skipping = true;
+      this.skipCommand = broken;
+      return new Fail('command_changed', 2);
+    }
+    if (f.remaining >= this.lastRemaining) {
+      const st = this.start(f);
+      return typeof st !== 'string' ? st : 'restarted';
+    }
+    if (f.remaining + 1 !== this.lastRemaining) {
+      this.state = 'idle';
+      this.buf = [];
+      this.last = f;
+      if (f.remaining !== 0) { this.skipping = true; this.skipCommand = f.command; }
+      return new Fail('bad_sequence', 3);
+    }
+    return this.append(f);
+  }
+  start(f) {
+    this.state = 'idle';
+    this.buf = [];
+    this.command = f.command;
+    return this.append(f);  // 256 frames of 15 bytes fit: remaining is one byte
+  }
+  append(f) {
+    for (const x of f.payload) this.buf.push(x);
+    if (f.remaining !== 0 || this.buf.length > f.payload.length) this.last = f;
+    this.lastRemaining = f.remaining;
+    this.state = f.remaining === 0 ? 'complete' : 'collecting';
+    return f.remaining === 0 ? 'complete' : 'need_more';
+  }
+}
+// Whether `t` is one whole JSON object (the library's json_object: a structural check).
+function jsonObject(t) {
+  const space = (c) => c === 0x20 || c === 0x09 || c === 0x0a || c === 0x0d;
+  let i = 0;
+  while (i < t.length && space(t[i])) ++i;
+  if (i === t.length || t[i] !== 0x7b) return false;
+  const open = [];
+  let inString = false;
+  for (; i < t.length; ++i) {
+    const c = t[i];
+    if (inString) {
+      if (c === 0x5c) ++i;
+      else if (c === 0x22) inString = false;
+      else if (c < 0x20) return false;
+      continue;
+    }
+    if (c === 0x22) inString = true;
+    else if (c === 0x7b || c === 0x5b) {
+      if (open.length === 64) return false;
+      open.push(c === 0x7b ? 0x7d : 0x5d);
+    } else if (c === 0x7d || c === 0x5d) {
+      if (open.length === 0 || open[open.length - 1] !== c) return false;
+      open.pop();
+      if (open.length === 0) break;
+    }
+  }
+  if (open.length !== 0 || i >= t.length) return false;
+  for (let k = i + 1; k < t.length; ++k) if (!space(t[k])) return false;
+  return true;
+}
+// The frames of one message: `remaining` counts down to 0, the last frame zero-padded.
+export function fragmentPayload(layout, fixed, command, payload) {
+  const ps = layout.payload_size;
+  const count = payload.length === 0 ? 1 : Math.ceil(payload.length / ps);
+  if (count > 256) throw new RobowireError(`capacity exceeded at byte ${256 * ps}`, { code: 'capacity_exceeded', offset: 256 * ps });
+  const frames = [];
+  for (let i = 0; i < count; ++i) {
+    const f = new Uint8Array(layout.size);
+    for (const [o, v] of fixed) f[o] = v;
+    f[layout.command] = command;
+    f[layout.remaining] = count - 1 - i;
+    f.set(payload.subarray(i * ps, i * ps + ps), layout.payload);
+    frames.push(f);
+  }
+  return frames;
+}
