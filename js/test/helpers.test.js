@@ -192,3 +192,15 @@ test('parseAdvertisement: bytes only', () => {
   assert.throws(() => parseAdvertisement(bytes(flags), 'x'), { name: 'TypeError', message: 'parseAdvertisement: scanResponse must be a Uint8Array, ArrayBuffer or DataView' });
   assert.equal(parseAdvertisement(bytes(flags), null), null);
 });
+
+test('docs/javascript.md: the helpers\' examples give what they say', async () => {
+  const { readFileSync } = await import('node:fs');
+  const doc = readFileSync(new URL('../../docs/javascript.md', import.meta.url), 'utf8');
+  const fns = { powerFromPercent, percentFromPower };
+  const examples = [...doc.matchAll(/buwizz3\.(powerFromPercent|percentFromPower)\((-?[\d.]+)\);\s*\/\/ (-?[\d.]+)/g)];
+  assert.equal(examples.length, 3);
+  for (const [, fn, arg, result] of examples) assert.equal(fns[fn](Number(arg)), Number(result), `${fn}(${arg})`);
+  assert.match(doc, new RegExp(`buwizz3\\.uuids\\.application\\.uuid;\\s*// '${uuids.application.uuid}'`));
+  assert.match(doc, /\(99 -> 126, 1 -> 1, 100 -> 127\)/);
+  assert.deepEqual([99, 1, 100].map(powerFromPercent), [126, 1, 127]);
+});
