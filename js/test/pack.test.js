@@ -54,3 +54,38 @@ const raw: number = buwizz3.powerFromPercent(50); void raw;
   const tsc = join(js, 'node_modules', 'typescript', 'bin', 'tsc');
   execFileSync(process.execPath, [tsc, '--strict', '--noEmit', '--target', 'es2022', '--module', 'nodenext', '--moduleResolution', 'nodenext', 'use.ts'], { cwd: dir, encoding: 'utf8' });
 });
+
+// A browser page that imports the installed package: Debian's chromium
+// headless through the web console's playwright-core (web/: npm ci).
+const chromiumPath = process.env.CHROMIUM ?? '/usr/bin/chromium';
+const playwrightAt = join(js, '..', 'web', 'node_modules', 'playwright-core');
+const noBrowser = (!existsSync(chromiumPath) && `no ${chromiumPath}`) || (!existsSync(playwrightAt) && 'web/node_modules missing (cd web && npm ci)');
+
+test('import from a browser page (headless Chromium)', { skip: skip || noBrowser }, async () => {
+  const { createRequire } = await import('node:module');
+  const http = await import('node:http');
+  const { chromium } = createRequire(join(js, '..', 'web', 'package.json'))('playwright-core');
+  const root = join(dir, 'node_modules');
+  const server = http.createServer((req, res) => {
+    const p = decodeURIComponent(new URL(req.url, 'http://x').pathname);
+    if (p === '/') return res.writeHead(200, { 'content-type': 'text/html' }).end('<!doctype html><title>robowire</title>');
+    const file = join(root, p);
+    if (!file.startsWith(`${root}/`) || !existsSync(file)) return res.writeHead(404).end();
+    res.writeHead(200, { 'content-type': 'text/javascript' }).end(readFileSync(file));
+  });
+  await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
+  const browser = await chromium.launch({ executablePath: chromiumPath, args: ['--no-sandbox'] });
+  try {
+    const page = await browser.newPage();
+    await page.goto(`http://127.0.0.1:${server.address().port}/`);
+    const out = await page.evaluate(async () => {
+      const { buwizz3 } = await import('/robowire/index.js');
+      return { m: buwizz3.decode(new DataView(new Uint8Array([0x32, 0x32]).buffer)), frame: Array.from(buwizz3.encode('set_data_period', { period_ms: 50 })) };
+    });
+    assert.deepEqual(out.m, { type: 'message', protocol: 'buwizz3', message: 'set_data_period', fields: { period_ms: 50, period_ms_physical: { value: 50, unit: 'ms' } } });
+    assert.deepEqual(out.frame, [0x32, 0x32]);
+  } finally {
+    await browser.close();
+    server.close();
+  }
+});
