@@ -5,6 +5,7 @@
 import * as buwizz3Codec from './lib/buwizz3.js';
 import * as navbotCodec from './lib/navbot.js';
 import * as ospCodec from './lib/osp.js';
+import { parseAdvertisement, percentFromPower, powerFromPercent, uuids } from './lib/helpers.js';
 import { RobowireError } from './lib/runtime.js';
 import schemaDocument from './lib/schema.js';
 
@@ -14,7 +15,16 @@ export const schema = schemaDocument;
 // BuWizz3: decode(bytes, {direction}) -> {type, protocol, message, fields};
 // encode(message, fields) -> Uint8Array. direction: "command" (host to
 // device), "notification" (device to host) or absent (the command byte decides).
-export const buwizz3 = Object.freeze({ decode: buwizz3Codec.decode, encode: buwizz3Codec.encode });
+// Helpers: powerFromPercent(p) -> raw power, percentFromPower(raw) -> %,
+// uuids (service, characteristics), parseAdvertisement(adv, scanResponse).
+export const buwizz3 = Object.freeze({
+  decode: buwizz3Codec.decode,
+  encode: buwizz3Codec.encode,
+  powerFromPercent,
+  percentFromPower,
+  uuids,
+  parseAdvertisement,
+});
 // NAVBOT-ES02: one 20-byte frame at a time.
 export const navbot = Object.freeze({
   decode: navbotCodec.decode,
