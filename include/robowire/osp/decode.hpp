@@ -168,18 +168,21 @@ inline constexpr auto sorted_keys_v = [] {
         for (std::size_t j = i; j > 0 && k[j - 1][0] > k[j][0]; --j) std::swap(k[j - 1], k[j]);
     return k;
 }();
-// A compare tree over sorted_keys_v[Lo, Hi); `key` is a wire_key.
+// A compare tree over sorted_keys_v[Lo, Hi); `key` is a wire_key. Each node
+// tests its key for equal, then greater, on the flags of one compare (as a
+// compiler lowers a `switch`): 11 keys take 8 instructions on average, where
+// a tree that tests for equal only at its leaves takes 9.
 template <std::size_t Lo, std::size_t Hi>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_in_range(decode_result& d, std::uint16_t key,
                                                       std::span<const std::uint8_t> in) noexcept {
     constexpr auto& k = sorted_keys_v<message>;
-    if constexpr (Hi - Lo == 1) {
-        if (key == k[Lo][0]) decode_message<k[Lo][1]>(d, in);
-        else d = fail(errc::unknown_message, 2);
+    if constexpr (Hi == Lo) {
+        d = fail(errc::unknown_message, 2);
     } else {
         constexpr std::size_t mid = Lo + (Hi - Lo) / 2;
-        if (key < k[mid][0]) decode_in_range<Lo, mid>(d, key, in);
-        else decode_in_range<mid, Hi>(d, key, in);
+        if (key == k[mid][0]) decode_message<k[mid][1]>(d, in);
+        else if (key > k[mid][0]) decode_in_range<mid + 1, Hi>(d, key, in);  // not `<`: g++ makes that `<= k - 1`
+        else decode_in_range<Lo, mid>(d, key, in);
     }
 }
 // The message whose DEV and CMD are in[2] and in[3], or unknown_message. At
