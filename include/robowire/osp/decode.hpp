@@ -128,15 +128,9 @@ constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
         if (in.size() < frame_size) return codec::fail_at(errc::too_short, in.size());
         if (in.size() > frame_size) return fail(errc::too_long, frame_size);
         return {};
-    } else {            // unrolled: faster on hosts
-#if defined(__clang__)  // merges these compares itself; the masked words cost it 4 instructions more
-        if (in.size() == frame_size && in[0] == start1 && in[1] == start2 && in[frame_size - 2] == end1 &&
-            in[frame_size - 1] == end2) [[likely]]
-            return {};
-#else
+    } else {  // the markers as masked words: faster on hosts (clang++ 14 too: it keeps four byte compares)
         if (in.size() == frame_size && codec::fixed_bytes_match<osp::frame>(in)) [[likely]]
             return {};
-#endif
         return frame_error(in);
     }
 }
