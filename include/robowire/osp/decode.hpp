@@ -138,12 +138,12 @@ constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
 // FlagSet: d's flag is stored (true) already, with the frame (decode_at).
 template <std::size_t I, bool FlagSet = false>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_message(decode_result& d, std::span<const std::uint8_t> in) noexcept {
-    auto& m = [&]() -> auto& {
-        if constexpr (FlagSet) return *std::get_if<I>(&detail::build_value_keep_flag(d, std::in_place_index<I>));
-        else return codec::make_alternative<I>(d);
+    if constexpr (FlagSet) {
+        auto& m = *std::get_if<I>(&detail::build_value_keep_flag(d, std::in_place_index<I>));
+        if (const error e = codec::decode_fields(m, in); e.code != errc::ok) d = e;
+    } else if (const error e = codec::decode_fields(codec::make_alternative<I>(d), in); e.code != errc::ok) {
+        d = e;
     }
-    ();
-    if (const error e = codec::decode_fields(m, in); e.code != errc::ok) d = e;
 }
 // The message whose key is `key`, by one compare per message (less code).
 template <std::size_t... I>
