@@ -326,7 +326,7 @@ constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) no
         d = e;
         return d;
     }
-    if constexpr (!ROBOWIRE_OPTIMIZE_SIZE && frame_by_word) {
+    if constexpr (!ROBOWIRE_OPTIMIZE_SIZE && frame_by_word) {  // one compare tree only (FlagSet)
         if (std::size_t at = 0; !std::is_constant_evaluated() && (at = frame_word_offset<Message>()) != 0) {
             // Bytes 1..8 (AA DEV CMD P1..P4 55, the markers checked) become
             // 01 DEV CMD P1..P4 01: result's flag, the frame and its flag, one store.
@@ -334,17 +334,21 @@ constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) no
             std::memcpy(&w, data + 1, 8);
             w ^= std::uint64_t{start2 ^ 1u} | std::uint64_t{end1 ^ 1u} << 56;
             std::memcpy(reinterpret_cast<unsigned char*>(&d) + at, &w, 8);
-            decode_by_key<true>(d, in, std::make_index_sequence<std::variant_size_v<Message>>{});
-            return d;
+        } else {  // another layout, or a constant expression (where the message sets the flag)
+            const osp::frame f{in[2], in[3], {in[4], in[5], in[6], in[7]}};
+            set_frame(d, &f);
+            if (!std::is_constant_evaluated()) static_cast<result<message>&>(d) = result<message>(message{});
         }
+        decode_by_key<true>(d, in, std::make_index_sequence<std::variant_size_v<Message>>{});
+    } else {
+        if (ROBOWIRE_OPTIMIZE_SIZE || std::is_constant_evaluated() || !frame_by_memcpy) {
+            const osp::frame f{in[2], in[3], {in[4], in[5], in[6], in[7]}};
+            set_frame(d, &f);
+        } else {  // one wide copy, not six bytes
+            std::memcpy(&frame_in_place(d), data + 2, sizeof(osp::frame));
+        }
+        decode_by_key(d, in, std::make_index_sequence<std::variant_size_v<Message>>{});
     }
-    if (ROBOWIRE_OPTIMIZE_SIZE || std::is_constant_evaluated() || !frame_by_memcpy) {
-        const osp::frame f{in[2], in[3], {in[4], in[5], in[6], in[7]}};
-        set_frame(d, &f);
-    } else {  // one wide copy, not six bytes
-        std::memcpy(&frame_in_place(d), data + 2, sizeof(osp::frame));
-    }
-    decode_by_key(d, in, std::make_index_sequence<std::variant_size_v<Message>>{});
     return d;
 }
 }  // namespace impl::inline ROBOWIRE_MODE_NAMESPACE
