@@ -288,7 +288,7 @@ namespace impl::inline ROBOWIRE_MODE_NAMESPACE {
 // merges the six byte copies instead.
 // g++ stores result's flag, the frame and its flag as one word where the
 // layout allows (frame_word_offset); clang++ would take DEV and CMD for the
-// compare tree out of that word with 6 instructions instead of one load.
+// compare tree out of that word with shifts instead of one load.
 #if defined(__clang__)
 inline constexpr bool frame_by_memcpy = true;
 inline constexpr bool frame_by_word = false;
@@ -297,10 +297,9 @@ inline constexpr bool frame_by_memcpy = false;
 inline constexpr bool frame_by_word = ROBOWIRE_COPY_RUNS && std::endian::native == std::endian::little;
 #endif
 // Where decode_result keeps result's flag, DEV, CMD, P1..P4 and the frame's
-// flag as 8 bytes in a row (64-bit hosts), the offset of the first; else 0
-// (little-endian hosts only).
-// Read from two decode_results built at run time: folds to a constant. A
-// template, so that including this header compiles none of it.
+// flag as 8 bytes in a row (64-bit hosts), the offset of the first; else 0.
+// Little-endian hosts only. Read from two decode_results built at run time:
+// folds to a constant. A template: including this header compiles none of it.
 template <class Message>
 std::size_t frame_word_offset() noexcept {
     const decode_result v(result<message>(Message{}), osp::frame{2, 3, {4, 5, 6, 7}});
