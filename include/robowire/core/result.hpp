@@ -230,6 +230,10 @@ namespace detail {
 // Makes r hold T(arg), whatever it held, and returns the value.
 template <class T, class A>
 constexpr T& build_value(result<T>& r, const A& arg) noexcept;
+// As build_value, but at run time leaves r's flag as it is: for a codec
+// that has stored it already (as true) together with other bytes.
+template <class T, class A>
+constexpr T& build_value_keep_flag(result<T>& r, const A& arg) noexcept;
 // Makes r hold a default-initialised T (member initialisers run), whatever it held.
 template <class T>
 constexpr T& build_default(result<T>& r) noexcept;
@@ -327,6 +331,8 @@ private:
     friend constexpr U& codec::unchecked_value(result<U>& r) noexcept;
     template <class U, class A>
     friend constexpr U& detail::build_value(result<U>& r, const A& arg) noexcept;
+    template <class U, class A>
+    friend constexpr U& detail::build_value_keep_flag(result<U>& r, const A& arg) noexcept;
     template <class U>
     friend constexpr U& detail::build_default(result<U>& r) noexcept;
     template <class U>
@@ -389,6 +395,12 @@ constexpr T& detail::build_value(result<T>& r, const A& arg) noexcept {
         ::new (static_cast<void*>(&r.value_)) typename result<T>::holder(std::in_place, arg);
         r.set_ok();
     }
+    return r.value_.v;
+}
+template <class T, class A>
+constexpr T& detail::build_value_keep_flag(result<T>& r, const A& arg) noexcept {
+    if (std::is_constant_evaluated()) return build_value(r, arg);
+    ::new (static_cast<void*>(&r.value_)) typename result<T>::holder(std::in_place, arg);
     return r.value_.v;
 }
 template <class T>

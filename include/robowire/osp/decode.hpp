@@ -6,6 +6,7 @@
 #include "../core/config.hpp"  // first: the C++ version check
 
 #include <array>
+#include <bit>
 #include <cstring>
 #include <new>
 #include <optional>
@@ -127,22 +128,22 @@ constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
         if (in.size() < frame_size) return codec::fail_at(errc::too_short, in.size());
         if (in.size() > frame_size) return fail(errc::too_long, frame_size);
         return {};
-    } else {            // unrolled: faster on hosts
-#if defined(__clang__)  // merges these compares itself; the masked words cost it 4 instructions more
-        if (in.size() == frame_size && in[0] == start1 && in[1] == start2 && in[frame_size - 2] == end1 &&
-            in[frame_size - 1] == end2) [[likely]]
-            return {};
-#else
+    } else {  // the markers as masked words: faster on hosts (clang++ 14 too: it keeps four byte compares)
         if (in.size() == frame_size && codec::fixed_bytes_match<osp::frame>(in)) [[likely]]
             return {};
-#endif
         return frame_error(in);
     }
 }
 // Fixed bytes checked by the frame already: makes the message and decodes its fields in place.
-template <std::size_t I>
+// FlagSet: d's flag is stored (true) already, with the frame (decode_at).
+template <std::size_t I, bool FlagSet = false>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_message(decode_result& d, std::span<const std::uint8_t> in) noexcept {
-    if (const error e = codec::decode_fields(codec::make_alternative<I>(d), in); e.code != errc::ok) d = e;
+    if constexpr (FlagSet) {
+        auto& m = *std::get_if<I>(&detail::build_value_keep_flag(d, std::in_place_index<I>));
+        if (const error e = codec::decode_fields(m, in); e.code != errc::ok) d = e;
+    } else if (const error e = codec::decode_fields(codec::make_alternative<I>(d), in); e.code != errc::ok) {
+        d = e;
+    }
 }
 // The message whose key is `key`, by one compare per message (less code).
 template <std::size_t... I>
@@ -168,24 +169,39 @@ inline constexpr auto sorted_keys_v = [] {
         for (std::size_t j = i; j > 0 && k[j - 1][0] > k[j][0]; --j) std::swap(k[j - 1], k[j]);
     return k;
 }();
-// A compare tree over sorted_keys_v[Lo, Hi); `key` is a wire_key.
-template <std::size_t Lo, std::size_t Hi>
+// A compare tree over sorted_keys_v[Lo, Hi); `key` is a wire_key. With g++
+// each node tests its key for equal, then greater, on the flags of one
+// compare (as g++ lowers a `switch`): 11 keys take 8 instructions on
+// average, where a tree that tests for equal only at its leaves (clang++'s
+// best) takes 9.
+template <std::size_t Lo, std::size_t Hi, bool FlagSet>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_in_range(decode_result& d, std::uint16_t key,
                                                       std::span<const std::uint8_t> in) noexcept {
     constexpr auto& k = sorted_keys_v<message>;
+#if defined(__clang__)  // clang++ makes `key > k` a second compare (`key < k + 1`), in either order
     if constexpr (Hi - Lo == 1) {
-        if (key == k[Lo][0]) decode_message<k[Lo][1]>(d, in);
+        if (key == k[Lo][0]) decode_message<k[Lo][1], FlagSet>(d, in);
         else d = fail(errc::unknown_message, 2);
     } else {
         constexpr std::size_t mid = Lo + (Hi - Lo) / 2;
-        if (key < k[mid][0]) decode_in_range<Lo, mid>(d, key, in);
-        else decode_in_range<mid, Hi>(d, key, in);
+        if (key < k[mid][0]) decode_in_range<Lo, mid, FlagSet>(d, key, in);
+        else decode_in_range<mid, Hi, FlagSet>(d, key, in);
     }
+#else  // not `key < k`, which g++ makes `key <= k - 1`
+    if constexpr (Hi == Lo) {
+        d = fail(errc::unknown_message, 2);
+    } else {
+        constexpr std::size_t mid = Lo + (Hi - Lo) / 2;
+        if (key == k[mid][0]) decode_message<k[mid][1], FlagSet>(d, in);
+        else if (key > k[mid][0]) decode_in_range<mid + 1, Hi, FlagSet>(d, key, in);
+        else decode_in_range<Lo, mid, FlagSet>(d, key, in);
+    }
+#endif
 }
 // The message whose DEV and CMD are in[2] and in[3], or unknown_message. At
 // speed, a compare tree on the wire_key: g++ turns the chain into a jump
 // table, whose load costs more.
-template <std::size_t... I>
+template <bool FlagSet = false, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::span<const std::uint8_t> in,
                                                     std::index_sequence<I...> all) noexcept {
     if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
@@ -199,7 +215,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::span<
             else ((i == I ? decode_message<I>(d, in) : void()), ...);
         }
     } else {
-        decode_in_range<0, sizeof...(I)>(d, static_cast<std::uint16_t>(in[2] | in[3] << 8), in);
+        decode_in_range<0, sizeof...(I), FlagSet>(d, static_cast<std::uint16_t>(in[2] | in[3] << 8), in);
     }
 }
 // Checks m's fields and writes them into `out` (FF AA DEV CMD 00 00 00 00 55 77 written already).
@@ -270,11 +286,32 @@ namespace impl::inline ROBOWIRE_MODE_NAMESPACE {
 // How decode copies DEV, CMD and P1..P4 fastest: clang++ merges a memcpy into
 // the frame made in place and drops its zeroing; g++ keeps the zeroing, and
 // merges the six byte copies instead.
+// g++ stores result's flag, the frame and its flag as one word where the
+// layout allows (frame_word_offset); clang++ would take DEV and CMD for the
+// compare tree out of that word with shifts instead of one load.
 #if defined(__clang__)
 inline constexpr bool frame_by_memcpy = true;
+inline constexpr bool frame_by_word = false;
 #else
 inline constexpr bool frame_by_memcpy = false;
+inline constexpr bool frame_by_word = ROBOWIRE_COPY_RUNS && std::endian::native == std::endian::little;
 #endif
+// Where decode_result keeps result's flag, DEV, CMD, P1..P4 and the frame's
+// flag as 8 bytes in a row (64-bit hosts), the offset of the first; else 0.
+// Little-endian hosts only. Read from two decode_results built at run time:
+// folds to a constant. A template: including this header compiles none of it.
+template <class Message>
+std::size_t frame_word_offset() noexcept {
+    const decode_result v(result<message>(Message{}), osp::frame{2, 3, {4, 5, 6, 7}});
+    const decode_result e(result<message>(fail(errc::unknown_message, 2)), std::nullopt);
+    const auto* vb = reinterpret_cast<const unsigned char*>(&v);
+    const auto at = static_cast<std::size_t>(reinterpret_cast<const unsigned char*>(&*v.frame()) - vb);
+    if (at == 0 || at + 7 > sizeof(decode_result)) return 0;
+    std::uint64_t wv, we;  // little-endian: the first byte lowest
+    std::memcpy(&wv, vb + at - 1, 8);
+    std::memcpy(&we, reinterpret_cast<const unsigned char*>(&e) + at - 1, 8);
+    return wv == 0x0107'0605'0403'0201u && (we & 0xFF00'0000'0000'00FFu) == 0 ? at - 1 : 0;
+}
 // decode's work, out of line: the input as pointer and size (a span that an
 // inlined caller passes on by value is copied through the stack first).
 template <class Message>
@@ -288,13 +325,29 @@ constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) no
         d = e;
         return d;
     }
-    if (ROBOWIRE_OPTIMIZE_SIZE || std::is_constant_evaluated() || !frame_by_memcpy) {
-        const osp::frame f{in[2], in[3], {in[4], in[5], in[6], in[7]}};
-        set_frame(d, &f);
-    } else {  // one wide copy, not six bytes
-        std::memcpy(&frame_in_place(d), data + 2, sizeof(osp::frame));
+    if constexpr (!ROBOWIRE_OPTIMIZE_SIZE && frame_by_word) {  // one compare tree only (FlagSet)
+        if (std::size_t at = 0; !std::is_constant_evaluated() && (at = frame_word_offset<Message>()) != 0) {
+            // Bytes 1..8 (AA DEV CMD P1..P4 55, the markers checked) become
+            // 01 DEV CMD P1..P4 01: result's flag, the frame and its flag, one store.
+            std::uint64_t w;
+            std::memcpy(&w, data + 1, 8);
+            w ^= std::uint64_t{start2 ^ 1u} | std::uint64_t{end1 ^ 1u} << 56;
+            std::memcpy(reinterpret_cast<unsigned char*>(&d) + at, &w, 8);
+        } else {  // another layout, or a constant expression (where the message sets the flag)
+            const osp::frame f{in[2], in[3], {in[4], in[5], in[6], in[7]}};
+            set_frame(d, &f);
+            if (!std::is_constant_evaluated()) static_cast<result<message>&>(d) = result<message>(message{});
+        }
+        decode_by_key<true>(d, in, std::make_index_sequence<std::variant_size_v<Message>>{});
+    } else {
+        if (ROBOWIRE_OPTIMIZE_SIZE || std::is_constant_evaluated() || !frame_by_memcpy) {
+            const osp::frame f{in[2], in[3], {in[4], in[5], in[6], in[7]}};
+            set_frame(d, &f);
+        } else {  // one wide copy, not six bytes
+            std::memcpy(&frame_in_place(d), data + 2, sizeof(osp::frame));
+        }
+        decode_by_key(d, in, std::make_index_sequence<std::variant_size_v<Message>>{});
     }
-    decode_by_key(d, in, std::make_index_sequence<std::variant_size_v<Message>>{});
     return d;
 }
 }  // namespace impl::inline ROBOWIRE_MODE_NAMESPACE
