@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """robowire.read_log and robowire.to_csv on logs of N lines: CPU time and peak memory.
 
-    python python/bench_logs.py [--lines 10000,100000] [--cli PATH] [--check]
+    python python/bench_logs.py [--lines 10000,100000,1000000] [--cli PATH] [--check [--timings]]
 
 Writes the sample session (examples/logs/session.py --lines N: an nRF Connect
 for Android log of N 68-byte BuWizz3 status notifications at 20 Hz), then
@@ -13,9 +13,13 @@ measures, each in a fresh Python process (so that the peak RSS is its own):
 CPU time (user + system, from getrusage) and microseconds per line; the peak
 RSS (ru_maxrss) and what `import robowire` alone takes.
 --check exits 1 unless, at the largest N, read_log's peak RSS is within 2 MB
-of the smallest N's (memory does not grow with the log); with --max-us also
-unless read_log takes at most that many microseconds of CPU per line (a
-timing: for your own machine, not for CI; docs/python.md gives about 13).
+of the smallest N's (memory does not grow with the log) and every peak RSS is
+at most PEAK_MB (what docs/python.md states) + 1 MB; with --timings also
+unless each case takes at most its US_A_LINE (the microseconds of CPU a line
+docs/python.md states at 10 k, 100 k and 1 M lines) + 30 % at each of those
+N measured (a timing: for a manual run on the machine the figures come from,
+not for CI); with --max-us
+also unless read_log takes at most that many microseconds of CPU per line.
 """
 import argparse
 import os
@@ -25,6 +29,11 @@ import sys
 import tempfile
 from pathlib import Path
 
+# As docs/python.md states them: CPU microseconds a line at 1 M lines, and the largest peak RSS in MB.
+US_A_LINE = {10_000: {"read_log": 13.0, "to_csv": 2.0, "to_csv(read_log)": 40.0},
+             100_000: {"read_log": 13.1, "to_csv": 1.4, "to_csv(read_log)": 38.5},
+             1_000_000: {"read_log": 12.5, "to_csv": 1.2, "to_csv(read_log)": 42.0}}
+PEAK_MB = 14.4
 HERE = Path(__file__).resolve().parent
 SESSION = HERE.parent / "examples" / "logs" / "session.py"
 
@@ -66,10 +75,11 @@ def run_cli(cli, path):
 
 def main():
     a = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    a.add_argument("--lines", default="10000,100000")
+    a.add_argument("--lines", default="10000,100000,1000000")
     a.add_argument("--cli", help="the command-line tool, for comparison")
     a.add_argument("--check", action="store_true")
     a.add_argument("--max-us", type=float, default=None)
+    a.add_argument("--timings", action="store_true", help="--check: also each case's time against US_A_LINE")
     args = a.parse_args()
     sizes = [int(x) for x in args.lines.split(",")]
     results = {}
@@ -93,8 +103,17 @@ def main():
         ok = (args.max_us is None or cpu / big * 1e6 <= args.max_us) and rss - results[(small, "read_log")][1] <= 2048
         limit = "" if args.max_us is None else f" (at most {args.max_us})"
         print(f"check: read_log {cpu / big * 1e6:.1f} us a line{limit}, peak RSS "
-              f"{(rss - results[(small, 'read_log')][1]) / 1024:+.1f} MB from {small} to {big} lines (at most +2): "
-              + ("ok" if ok else "FAILED"))
+              f"{(rss - results[(small, 'read_log')][1]) / 1024:+.1f} MB from {small} to {big} lines (at most +2)")
+        peak = max(r for _, r in results.values()) / 1024
+        print(f"check: largest peak RSS {peak:.1f} MB (at most {PEAK_MB} + 1)")
+        ok = ok and peak <= PEAK_MB + 1
+        if args.timings:
+            for n in sizes:
+                for what, us in US_A_LINE.get(n, {}).items():
+                    got = results[(n, what)][0] / n * 1e6
+                    print(f"check: {n} lines, {what} {got:.1f} us a line (stated {us}, at most +30 %)")
+                    ok = ok and got <= 1.3 * us
+        print("check: " + ("ok" if ok else "FAILED"))
         return 0 if ok else 1
     return 0
 
