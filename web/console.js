@@ -196,7 +196,8 @@ async function connectOsp() {
       while (open) {
         const { value, done } = await reader.read();
         if (done) break;
-        for (const r of scanner.push(value)) addLog(recordEntry(r, value, 'notification'));
+        // a message record carries no bytes (as the tool's scan): its frame is the message encoded again
+        for (const r of scanner.push(value)) addLog(recordEntry(r, r.type === 'message' ? rw.osp.encode(r) : value, 'notification'));
       }
     } catch (e) {
       setState(`serial port: ${e.message}`);

@@ -10,7 +10,12 @@ import { after, before, test } from 'node:test';
 
 const js = fileURLToPath(new URL('..', import.meta.url));
 const pkg = JSON.parse(readFileSync(join(js, 'package.json'), 'utf8'));
-const built = pkg.files.every((f) => existsSync(join(js, f)));
+// an entry of "files" is there: a path, or a folder/*.ext pattern with at least one match
+const present = (f) => {
+  const m = f.match(/^(.*)\/\*(\.\w+)$/);
+  return m ? existsSync(join(js, m[1])) && readdirSync(join(js, m[1])).some((n) => n.endsWith(m[2])) : existsSync(join(js, f));
+};
+const built = pkg.files.every(present);
 const npm = (args, cwd) => execFileSync('npm', args, { cwd, encoding: 'utf8', env: { ...process.env, npm_config_audit: 'false', npm_config_fund: 'false', npm_config_update_notifier: 'false' } });
 
 let dir;
@@ -25,7 +30,7 @@ before(() => {
 });
 after(() => dir && rmSync(dir, { recursive: true, force: true }));
 
-const skip = !built && `not built: ${pkg.files.filter((f) => !existsSync(join(js, f))).join(', ')}`;
+const skip = !built && `not built: ${pkg.files.filter((f) => !present(f)).join(', ')}`;
 
 test('the tarball holds the files of package.json and no tests, sources or node_modules', { skip }, () => {
   for (const f of ['index.js', 'index.d.ts', 'lib/helpers.js', 'package.json']) assert.ok(files.includes(f), `${f} not in the tarball`);

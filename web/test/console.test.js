@@ -246,6 +246,7 @@ test('NAVBOT-ES02: notifications reassembled, decoded and logged', async (t) => 
   await page.evaluate(() => window.fake.notify('55 AA 10 00 00 00 00 8A 00 01 00 00 00 00 00 00 00 00 00 00', '6e400013-b5a3-f393-e0a9-e50e24dcca9e'));
   await until('error row', async () => (await text('#error-count')) === '1');
   assert.match(await page.locator('#log .error').last().textContent(), /pitch/);
+  if (shots) await page.screenshot({ path: path.join(shots, 'console-navbot.png'), clip: { x: 0, y: 0, width: 880, height: 440 } });
 });
 
 test('OSP: the serial stream at 115200 baud scanned, decoded and logged', async (t) => {
@@ -255,11 +256,12 @@ test('OSP: the serial stream at 115200 baud scanned, decoded and logged', async 
   await page.evaluate(() => window.fake.serialData('FF AA 02 12 EC'));
   await page.evaluate(() => window.fake.serialData('04 00 00 55 77'));
   await until('voltage row', async () => /1260/.test(await text('#log')));
+  assert.match(await text('#log'), /FF AA 02 12 EC 04 00 00 55 77/);  // the whole frame, not the last read
   // docs/cli.md: key 03 01 is unknown
   await page.evaluate(() => window.fake.serialData('FF AA 03 01 0A 0B 0C 0D 55 77'));
   await until('error row', async () => (await text('#error-count')) === '1');
   assert.match(await page.locator('#log .error').last().textContent(), /unknown key/);
-  if (shots) await page.screenshot({ path: path.join(shots, 'console-osp.png') });
+  if (shots) await page.screenshot({ path: path.join(shots, 'console-osp.png'), clip: { x: 0, y: 0, width: 880, height: 440 } });
 });
 
 test('no uncaught error in the page', () => {
