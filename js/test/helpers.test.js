@@ -5,7 +5,7 @@ import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { test } from 'node:test';
 
-import { RobowireError } from '../index.js';
+import { RobowireError, buwizz3, schema } from '../index.js';
 import { parseAdvertisement, percentFromPower, powerFromPercent, uuids } from '../lib/helpers.js';
 
 const cli = process.env.ROBOWIRE_CLI;
@@ -203,4 +203,16 @@ test('docs/javascript.md: the helpers\' examples give what they say', async () =
   assert.match(doc, new RegExp(`buwizz3\\.uuids\\.application\\.uuid;\\s*// '${uuids.application.uuid}'`));
   assert.match(doc, /\(99 -> 126, 1 -> 1, 100 -> 127\)/);
   assert.deepEqual([99, 1, 100].map(powerFromPercent), [126, 1, 127]);
+});
+
+test('powerFromPercent follows the schema\'s unit helper (range, rounding)', () => {
+  const rule = schema.protocols.find((p) => p.name === 'buwizz3').unit_helpers.find((h) => h.name === 'power_from_percent');
+  const { min, max } = rule.input.range;
+  assert.equal(buwizz3.powerFromPercent(min), -127);
+  assert.equal(buwizz3.powerFromPercent(max), 127);
+  assert.throws(() => buwizz3.powerFromPercent(max + 1e-9), RangeError);
+  assert.throws(() => buwizz3.powerFromPercent(min - 1e-9), RangeError);
+  assert.equal(rule.rounding, 'half_away_from_zero');
+  assert.equal(buwizz3.powerFromPercent(50), 64);    // 63.5 -> 64
+  assert.equal(buwizz3.powerFromPercent(-50), -64);  // -63.5 -> -64
 });

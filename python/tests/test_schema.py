@@ -137,3 +137,13 @@ def test_schema_version_2_against_the_documents():
     bools = [f for m in bw["messages"] for f in m["fields"] if f["value"] == "bool"]
     assert bools and all(f["valid"] == {"min": 0, "max": 1} for f in bools)
     assert "15 significant digits" in s["output"]["physical"]
+    # unit helpers (docs/buwizz3.md, docs/osp.md): percent x 127 / 100 half away from zero (50 % -> 64,
+    # -50 % -> -64), error at the first power byte; OSP voltage mV / 10 half away from zero, error at P1
+    helpers = {h["name"]: h for p in (bw, op) for h in p["unit_helpers"]}
+    power = helpers["power_from_percent"]
+    assert (power["message"], power["field"], power["rounding"]) == ("set_motor_data", "power", "half_away_from_zero")
+    assert power["input"] == {"unit": "%", "range": {"of": "input", "min": -100, "max": 100}}
+    assert power["error"] == {"code": "value_out_of_range", "offset": 1}
+    volt = helpers["obp1::voltage_from_millivolts"]
+    assert (volt["field"], volt["rounding"], volt["error"]["offset"]) == ("centivolts", "half_away_from_zero", 4)
+    assert helpers["obp1::soc_from_basis_points"]["input"]["range"] == {"of": "input", "min": 0, "max": 10000}

@@ -32,7 +32,8 @@ using json = nlohmann::ordered_json;
 
 inline constexpr int format_version = 1;
 // Version 2: key_offsets, bool ranges, physical names, raw_is_physical,
-// characteristics, direction rules, output and error-line rules.
+// characteristics, direction rules, output and error-line rules, and the
+// unit helpers' rounding (unit_helpers).
 inline constexpr int schema_version = 2;
 
 // Name of an error code as the schema and the Python package spell it
@@ -206,6 +207,22 @@ inline json document(json protocols) {
             {"output", output_rules()}};
 }
 
+// A unit helper that turns a physical value into a field's raw value
+// (<proto>/units.hpp): the input's unit and range (keys min/max inclusive,
+// above/below exclusive; "of": "input", or "raw" for the raw value before
+// rounding), the arithmetic in doubles, how it rounds (half_away_from_zero,
+// half_up), and the error when the input is out of range.
+inline json unit_helper(std::string_view name, std::string_view message, std::string_view field, std::string_view unit,
+                        json range, std::string_view raw, std::string_view rounding, std::size_t error_offset) {
+    return {{"name", name},
+            {"message", message},
+            {"field", field},
+            {"input", {{"unit", unit}, {"range", std::move(range)}}},
+            {"raw", raw},
+            {"rounding", rounding},
+            {"error", {{"code", errc_name(errc::value_out_of_range)}, {"offset", error_offset}}}};
+}
+
 // Each protocol: its message lists (the std::variants the dispatchers decode).
 inline json buwizz3_entry() {
     json m = json::array();
@@ -216,6 +233,13 @@ inline json buwizz3_entry() {
     e["direction_rule"] =
         "the direction whose message byte 0 names; both: the one whose min_size..max_input holds the length; "
         "both or neither: a direction must be given";
+    e["unit_helpers"] = json::array(
+        {unit_helper("power_from_percent", "set_motor_data", "power", "%",
+                     {{"of", "input"}, {"min", -100}, {"max", 100}}, "percent * 127 / 100", "half_away_from_zero", 1),
+         unit_helper("ramp_rate_from_seconds", "set_ramp_rates", "ramp_up", "s", {{"of", "input"}, {"above", 0}},
+                     "100 / (seconds * 7.8125), then clamped to 1..255", "half_up", 1),
+         unit_helper("current_limit_raw", "set_current_limits", "limit_raw", "mA",
+                     {{"of", "input"}, {"min", 0}, {"below", 7665}}, "milliamps / 30 (30 mA steps)", "half_up", 1)});
     return e;
 }
 inline json navbot_entry() {
@@ -236,6 +260,15 @@ inline json osp_entry() {
     add_messages<osp::message>(m, {2, 3});
     json e = protocol_entry(osp::descriptor, "serial; FF AA DEV CMD P1..P4 55 77", {2, 3}, std::move(m));
     e["frame"] = message_of<osp::frame>({}, {});  // markers and length, checked first
+    // the document's scale (osp::scale::document)
+    e["unit_helpers"] = json::array(
+        {unit_helper("arm1::angle_from_radians", "set_angle", "angle", "rad",
+                     {{"of", "raw"}, {"min", -0.5}, {"below", 65535.5}}, "radians * 16384 / pi", "half_away_from_zero",
+                     5),
+         unit_helper("obp1::voltage_from_millivolts", "voltage", "centivolts", "mV",
+                     {{"of", "input"}, {"min", -327684}, {"max", 327674}}, "millivolts / 10", "half_away_from_zero", 4),
+         unit_helper("obp1::soc_from_basis_points", "soc", "soc_raw", "basis points (10000 = 100 %)",
+                     {{"of", "input"}, {"min", 0}, {"max", 10000}}, "basis_points * 65535 / 10000", "half_up", 4)});
     return e;
 }
 // Every protocol, or the one named (an empty "protocols" list for an unknown name).
