@@ -3,8 +3,8 @@
 // packages, test helpers): the alternatives of a protocol's std::variant, the
 // one found by name or by key bytes, the input lengths a message takes, the
 // elements of a field by kind with their physical values, and flag-bit
-// iteration. The error text is describe_error (core/fields.hpp). Everything
-// here is constexpr and allocates nothing; no codec reads it.
+// iteration, and the fuzz dictionary of a protocol's variants. The error text is describe_error (core/fields.hpp).
+// Everything here is constexpr and allocates nothing; no codec reads it.
 #pragma once
 
 #include "core/config.hpp"  // first: the C++ version check
@@ -18,6 +18,8 @@
 #include <utility>
 #include <variant>
 
+#include "core/bytes.hpp"
+#include "core/descriptor.hpp"
 #include "core/fields.hpp"
 #include "core/flag_bits.hpp"
 #include "core/table.hpp"
@@ -78,6 +80,63 @@ template <described M>
         if (b.offset < in.size() && in[b.offset] != b.value) return false;
     return !table_v<M>.fixed.empty();
 }
+
+// ---------------------------------------------------------------- fuzz dictionary
+namespace detail {
+template <class... Variants>
+constexpr std::size_t fixed_byte_count() noexcept {
+    std::size_t n = 0;
+    (for_each_alternative<Variants>([&](auto t) { n += table_v<typename decltype(t)::type>.fixed.size(); }), ...);
+    return n;
+}
+template <std::size_t N>
+struct fuzz_token_list {
+    std::array<fuzz_token, N> tokens{};
+    std::size_t size = 0;
+    constexpr void add(const fuzz_token& t) noexcept {
+        for (std::size_t i = 0; i < size; ++i)
+            if (equal_bytes(tokens[i].view(), t.view())) return;
+        tokens[size++] = t;
+    }
+};
+// Every run of M's fixed bytes at consecutive offsets (split every 16 bytes) into `out`.
+template <class M, std::size_t N>
+constexpr void add_fixed_runs(fuzz_token_list<N>& out) noexcept {
+    auto fixed = table_v<M>.fixed;  // in offset order
+    for (std::size_t i = 1; i < fixed.size(); ++i)
+        for (std::size_t j = i; j > 0 && fixed[j].offset < fixed[j - 1].offset; --j) {
+            const auto b = fixed[j];
+            fixed[j] = fixed[j - 1];
+            fixed[j - 1] = b;
+        }
+    fuzz_token t{};
+    for (std::size_t i = 0; i < fixed.size(); ++i) {
+        if (t.size == sizeof t.bytes || (t.size > 0 && fixed[i].offset != fixed[i - 1].offset + 1)) {
+            out.add(t);
+            t = {};
+        }
+        t.bytes[t.size++] = fixed[i].value;
+    }
+    if (t.size > 0) out.add(t);
+}
+template <class... Variants>
+constexpr auto fuzz_token_list_of() noexcept {
+    fuzz_token_list<fixed_byte_count<Variants...>()> out;
+    (for_each_alternative<Variants>([&](auto t) { add_fixed_runs<typename decltype(t)::type>(out); }), ...);
+    return out;
+}
+}  // namespace detail
+
+// The fuzz dictionary of a protocol's variants: every run of fixed bytes at
+// consecutive offsets of every alternative (markers with command bytes, a
+// trailer), each once, in variant order. A descriptor's `dictionary`.
+template <class... Variants>
+inline constexpr auto fuzz_tokens_v = [] {
+    constexpr auto all = detail::fuzz_token_list_of<Variants...>();
+    std::array<fuzz_token, all.size> out{};
+    for (std::size_t i = 0; i < all.size; ++i) out[i] = all.tokens[i];
+    return out;
+}();
 
 // ---------------------------------------------------------------- lengths
 // The input lengths M's decoder accepts as runs [first, last], increasing

@@ -22,9 +22,12 @@ from .logs import LogRecords, csv_columns, plot, read_log, to_csv  # noqa: E402
 if TYPE_CHECKING:
     from typing import Any, Optional
 
-__all__ = ["DecodeError", "EncodeError", "buwizz3", "navbot", "osp", "schema", "error_codes", "__version__",
+__all__ = ["DecodeError", "EncodeError", "buwizz3", "navbot", "osp", "protocols", "schema", "error_codes", "__version__",
            "read_log", "to_csv", "csv_columns", "plot", "LogRecords"]
 __version__ = "0.1.0"
+
+#: The protocols' names, in the order of `robowire list` (their descriptors).
+protocols: "list[str]" = list(_robowire.protocols)
 
 #: Every error code (the values of DecodeError.code / EncodeError.code) and its text.
 error_codes: "dict[str, str]" = {k: v for k, v in _robowire.error_codes.items() if k != "ok"}
@@ -35,7 +38,7 @@ def schema(protocol: Optional[str] = None) -> dict[str, Any]:
     in the format of `robowire list --json` (docs/python.md)."""
     import json
 
-    if protocol is not None and protocol not in ("buwizz3", "navbot", "osp"):
-        raise KeyError(f"unknown protocol {protocol!r} (buwizz3, navbot, osp)")
+    if protocol is not None and protocol not in protocols:
+        raise KeyError(f"unknown protocol {protocol!r} ({', '.join(protocols)})")
     result: dict[str, Any] = json.loads(_robowire.schema_json(protocol or ""))
     return result

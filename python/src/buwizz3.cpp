@@ -1,5 +1,5 @@
 // robowire.buwizz3: commands (host -> device) and notifications (device ->
-// host) from buwizz3::command and buwizz3::notification; units, UUIDs, the
+// host) from the descriptor's buwizz3::messages (commands, notifications); units, UUIDs, the
 // advertisement parser.
 #include <robowire/buwizz3.hpp>
 
@@ -11,6 +11,8 @@
 namespace rwpy {
 namespace {
 namespace bw = robowire::buwizz3;
+using commands = bw::messages::to_device;
+using notifications = bw::messages::from_device;
 
 PyObject* protocol() {
     static PyObject* p = interned("buwizz3");
@@ -47,11 +49,11 @@ py::dict decode_as(std::span<const std::uint8_t> in, direction d, std::string no
     char buf[160];
     if (d == direction::command) {
         const auto r = bw::decode_command(in);
-        if (!r) raise_decode(robowire::describe_error<bw::command>(r.error(), in, buf), r.error(), notes);
+        if (!r) raise_decode(robowire::describe_error<commands>(r.error(), in, buf), r.error(), notes);
         return variant_dict(protocol(), *r);
     }
     const auto r = bw::decode_notification(in);
-    if (!r) raise_decode(robowire::describe_error<bw::notification>(r.error(), in, buf), r.error(), notes);
+    if (!r) raise_decode(robowire::describe_error<notifications>(r.error(), in, buf), r.error(), notes);
     return variant_dict(protocol(), *r);
 }
 
@@ -68,8 +70,8 @@ py::dict decode(py::handle data, py::handle dir) {
         else throw py::value_error("direction: 'command', 'notification' or None, got " + shorten(py::repr(dir).cast<std::string>()));
     }
     if (in.empty()) return decode_as(in, d == direction::any ? direction::command : d);
-    const auto c = by_command<bw::command>(in[0], in.size());
-    const auto n = by_command<bw::notification>(in[0], in.size());
+    const auto c = by_command<commands>(in[0], in.size());
+    const auto n = by_command<notifications>(in[0], in.size());
     if (d == direction::command)
         return decode_as(in, d, !c.found && n.found ? hex2(in[0]) + " is the notification " + n.name : "");
     if (d == direction::notification)
@@ -89,10 +91,10 @@ py::dict decode(py::handle data, py::handle dir) {
 py::bytes encode(py::handle message, py::kwargs fields) {
     const auto r = encode_args("buwizz3", message, fields);
     py::bytes out;
-    if (encode_named<bw::command>(r.name, r.fields, r.from_dict, out)) return out;
-    if (encode_named<bw::notification>(r.name, r.fields, r.from_dict, out)) return out;
-    throw py::key_error("unknown message " + r.name + " of buwizz3 (commands: " + message_names<bw::command>() +
-                        "; notifications: " + message_names<bw::notification>() + ")");
+    if (encode_named<commands>(r.name, r.fields, r.from_dict, out)) return out;
+    if (encode_named<notifications>(r.name, r.fields, r.from_dict, out)) return out;
+    throw py::key_error("unknown message " + r.name + " of buwizz3 (commands: " + message_names<commands>() +
+                        "; notifications: " + message_names<notifications>() + ")");
 }
 
 template <class T>

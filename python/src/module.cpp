@@ -2,6 +2,8 @@
 // submodule per protocol (buwizz3.cpp, navbot.cpp, osp.cpp, each its own
 // translation unit so that they compile in parallel), plus the schema, the
 // error codes and the log reader (logs.cpp, on the command-line tool's).
+#include <robowire/protocols.hpp>
+
 #include "codec.hpp"
 #include "protocols.hpp"
 
@@ -21,6 +23,10 @@ PYBIND11_MODULE(_robowire, m) {
         codes[py::str(std::string(row.name))] = py::str(std::string(row.text));
     }
     m.attr("error_codes") = codes;
+
+    py::list names;  // the descriptors' names, in `list` order
+    for (const auto* d : robowire::all_protocols) names.append(py::str(d->name.data(), d->name.size()));
+    m.attr("protocols") = names;
 
     py::module_ buwizz3 = m.def_submodule("buwizz3", "BuWizz3");
     py::module_ navbot = m.def_submodule("navbot", "NAVBOT-ES02");

@@ -67,8 +67,8 @@ py::dict decode(py::handle data, py::handle dir) {
 py::bytes encode(py::handle message, py::kwargs fields) {
     const auto r = encode_args("navbot", message, fields);
     py::bytes out;
-    if (encode_named<nb::message>(r.name, r.fields, r.from_dict, out)) return out;
-    throw py::key_error("unknown message " + r.name + " of navbot (messages: " + message_names<nb::message>() + ")");
+    if (encode_named<nb::messages::to_device>(r.name, r.fields, r.from_dict, out)) return out;
+    throw py::key_error("unknown message " + r.name + " of navbot (messages: " + message_names<nb::messages::to_device>() + ")");
 }
 
 // The frames of one message (fragmenter): payload bytes, or text (UTF-8).

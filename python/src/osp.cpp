@@ -36,8 +36,8 @@ py::dict decode(py::handle data, py::handle dir) {
 py::bytes encode(py::handle message, py::kwargs fields) {
     const auto r = encode_args("osp", message, fields);
     py::bytes out;
-    if (encode_named<osp::message>(r.name, r.fields, r.from_dict, out)) return out;
-    throw py::key_error("unknown message " + r.name + " of osp (messages: " + message_names<osp::message>() + ")");
+    if (encode_named<osp::messages::to_device>(r.name, r.fields, r.from_dict, out)) return out;
+    throw py::key_error("unknown message " + r.name + " of osp (messages: " + message_names<osp::messages::to_device>() + ")");
 }
 
 // The stream scanner: feed(chunk) -> list of message dicts and error dicts.

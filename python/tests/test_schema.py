@@ -63,6 +63,13 @@ def test_schema_against_the_documents():
     assert (pitch["offset"], pitch["valid"], pitch["unit"]["name"]) == (7, {"min": -100, "max": 100}, "%")
 
 
+def test_protocols_from_the_descriptors():
+    assert robowire.protocols == ["buwizz3", "navbot", "osp"]
+    assert [p["name"] for p in robowire.schema()["protocols"]] == robowire.protocols
+    with pytest.raises(KeyError, match=r"unknown protocol 'foo' \(buwizz3, navbot, osp\)"):
+        robowire.schema("foo")
+
+
 def test_error_codes():
     assert robowire.error_codes["value_out_of_range"] == "value out of range"
     assert robowire.error_codes["bad_length"] == "length matches no form of the message"

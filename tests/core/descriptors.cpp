@@ -1,7 +1,10 @@
 #include <robowire/protocols.hpp>
 
 #include <catch2/catch.hpp>
+#include <cstdint>
+#include <span>
 #include <string_view>
+#include <type_traits>
 
 using namespace robowire;
 
@@ -40,4 +43,50 @@ TEST_CASE("descriptors: names, characteristics and stream kinds", "[core][descri
                    &navbot::descriptor.characteristics[1]);
     STATIC_REQUIRE(navbot::descriptor.find(uuid_literal("6e400011-b5a3-f393-e0a9-e50e24dcca9e")) == nullptr);
     STATIC_REQUIRE(buwizz3::descriptor.find(navbot::write_uuid) == nullptr);
+}
+
+namespace {
+template <std::size_t N>
+constexpr bool has_token(std::span<const fuzz_token> dict, const std::uint8_t (&bytes)[N]) {
+    for (const auto& t : dict)
+        if (equal_bytes(t.view(), std::span<const std::uint8_t>(bytes, N))) return true;
+    return false;
+}
+constexpr bool no_repeats(std::span<const fuzz_token> dict) {
+    for (std::size_t i = 0; i < dict.size(); ++i)
+        for (std::size_t j = i + 1; j < dict.size(); ++j)
+            if (equal_bytes(dict[i].view(), dict[j].view())) return false;
+    return true;
+}
+}  // namespace
+
+// Directions and fuzz dictionaries, from the documents' frame layouts (typed by hand).
+TEST_CASE("descriptors: message variants by direction and fuzz dictionaries", "[core][descriptor]") {
+    STATIC_REQUIRE(std::is_same_v<buwizz3::messages::to_device, buwizz3::command>);
+    STATIC_REQUIRE(std::is_same_v<buwizz3::messages::from_device, buwizz3::notification>);
+    STATIC_REQUIRE(buwizz3::descriptor.has_directions);
+    STATIC_REQUIRE(std::is_same_v<osp::messages::to_device, osp::messages::from_device>);
+    STATIC_REQUIRE_FALSE(osp::descriptor.has_directions);
+    STATIC_REQUIRE_FALSE(navbot::descriptor.has_directions);
+
+    // OSP: FF AA DEV CMD for each of the 11 messages (OBP1's requests CMD 01..04,
+    // its answers 11..14) and the trailer 55 77, once each.
+    STATIC_REQUIRE(osp::descriptor.dictionary.size() == 12);
+    STATIC_REQUIRE(has_token(osp::descriptor.dictionary, {0xFF, 0xAA, 0x00, 0x01}));  // REQ_DEVICE_TYPE
+    STATIC_REQUIRE(has_token(osp::descriptor.dictionary, {0xFF, 0xAA, 0x01, 0x02}));  // ARM1 set angle
+    STATIC_REQUIRE(has_token(osp::descriptor.dictionary, {0xFF, 0xAA, 0x02, 0x14}));
+    STATIC_REQUIRE(has_token(osp::descriptor.dictionary, {0x55, 0x77}));
+    STATIC_REQUIRE_FALSE(has_token(osp::descriptor.dictionary, {0xFF, 0xAA}));  // only with DEV CMD
+    STATIC_REQUIRE(no_repeats(osp::descriptor.dictionary));
+
+    // BuWizz3: a command byte each (0x40 with its sub-command 0x10), 0x01 the status.
+    STATIC_REQUIRE(has_token(buwizz3::descriptor.dictionary, {0x30}));  // set motor data
+    STATIC_REQUIRE(has_token(buwizz3::descriptor.dictionary, {0x40, 0x10}));
+    STATIC_REQUIRE(has_token(buwizz3::descriptor.dictionary, {0x01}));
+    STATIC_REQUIRE(no_repeats(buwizz3::descriptor.dictionary));
+
+    // NAVBOT: 55 AA, and a maneuver's 55 AA 10 00 (command 0x10, remaining 0).
+    STATIC_REQUIRE(navbot::descriptor.dictionary.size() == 2);
+    STATIC_REQUIRE(has_token(navbot::descriptor.dictionary, {0x55, 0xAA, 0x10, 0x00}));
+    STATIC_REQUIRE(has_token(navbot::descriptor.dictionary, {0x55, 0xAA}));
 }

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Compiles every ```cpp block of README.md and docs/*.md with each compiler given
-(default: g++ and clang++) under the project's strict warning set.
+(default: g++ and clang++) under the project's strict warning set, and fails on a line longer than
+.clang-format's column limit.
 
 A block with its own main() (or a fuzz harness's LLVMFuzzerTestOneInput) is
 compiled as it is. Any other block is a
@@ -27,6 +28,7 @@ import tempfile
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 STRICT = ["-std=c++20", "-Wall", "-Wextra", "-Wpedantic", "-Wconversion", "-Wsign-conversion",
           "-Wshadow", "-Werror"]
+COLUMN_LIMIT = int(re.search(r"^ColumnLimit:\s*(\d+)", open(os.path.join(ROOT, ".clang-format")).read(), re.M)[1])
 FRAGMENT_ONLY = ["-Wno-unused-variable", "-Wno-unused-but-set-variable"]
 
 PRELUDE = r"""
@@ -110,6 +112,12 @@ def main(argv):
         print("no ```cpp blocks found")
         return 1
     failures = 0
+    # the column limit of .clang-format (scripts/format): a block must read as code formatted in the tree
+    for rel, line, code in snippets:
+        for n, text in enumerate(code.splitlines()):
+            if len(text) > COLUMN_LIMIT:
+                failures += 1
+                print(f"FAILED {rel}:{line + n}: {len(text)} columns, more than .clang-format's {COLUMN_LIMIT}")
     with tempfile.TemporaryDirectory() as tmp:
         jobs = []
         skipped = 0

@@ -7,7 +7,9 @@ of the single header, so that a new header cannot be forgotten:
   included by the protocol's decode.hpp needs no second edit; core/detail/
   is reached through the core headers);
 - robowire.hpp includes every other header of include/robowire/ (the four
-  umbrellas and reflect.hpp), and through them reaches every header there;
+  umbrellas, protocols.hpp and reflect.hpp), directly or, for a protocol's
+  umbrella, through protocols.hpp (a new protocol's one registry edit), and
+  through them reaches every header there;
 - scripts/amalgamate.py writes a section for every header;
 - the optional extras (include/robowire/ext/, and fuzz.hpp, ext/fuzz.hpp's
   former path) are in none of them: robowire.hpp and the single header do
@@ -59,6 +61,8 @@ for umbrella in ("core", "buwizz3", "navbot", "osp"):
             failures.append(f"robowire/{umbrella}.hpp does not include {h} (nor a header that includes it)")
 
 direct = includes(os.path.join(top, "robowire.hpp"))
+if "robowire/protocols.hpp" in direct:
+    direct |= includes(os.path.join(top, "protocols.hpp"))
 for h in headers:
     if os.path.dirname(h) == "robowire" and h != "robowire/robowire.hpp" and h not in direct:
         failures.append(f"robowire/robowire.hpp does not include {h}")

@@ -1,5 +1,5 @@
 // BuWizz3: commands (host -> device) and notifications (device -> host), from
-// buwizz3::command and buwizz3::notification.
+// the descriptor's variants, buwizz3::messages::to_device and from_device.
 #include <robowire/buwizz3/protocol.hpp>
 
 #include "describe.hpp"
@@ -8,6 +8,8 @@
 namespace robowire::tools {
 namespace {
 namespace bw = robowire::buwizz3;
+using command = bw::messages::to_device;
+using notification = bw::messages::from_device;
 
 // The message of variant V whose command byte is `cmd`: its name and accepted lengths.
 template <class V>
@@ -30,17 +32,14 @@ outcome decode_as(std::span<const std::uint8_t> in, direction d, output& out, co
     if (d == direction::command) {
         const auto r = bw::decode_command(in);
         char buf[160];
-        if (!r)
-            return decode_failure<bw::command>(robowire::describe_error<bw::command>(r.error(), in, buf), in,
-                                               r.error());
+        if (!r) return decode_failure<command>(robowire::describe_error<command>(r.error(), in, buf), in, r.error());
         emit::variant_message(out, meta, "buwizz3", *r, no_notes);
         return {};
     }
     const auto r = bw::decode_notification(in);
     char buf[160];
     if (!r)
-        return decode_failure<bw::notification>(robowire::describe_error<bw::notification>(r.error(), in, buf), in,
-                                                r.error());
+        return decode_failure<notification>(robowire::describe_error<notification>(r.error(), in, buf), in, r.error());
     emit::variant_message(out, meta, "buwizz3", *r, no_notes);
     return {};
 }
@@ -56,8 +55,8 @@ outcome decode(std::span<const std::uint8_t> in, direction d, output& out, const
         }
     }
     bool cmd_fits = false, note_fits = false;
-    const auto c = by_command<bw::command>(in[0], in.size(), cmd_fits);
-    const auto n = by_command<bw::notification>(in[0], in.size(), note_fits);
+    const auto c = by_command<command>(in[0], in.size(), cmd_fits);
+    const auto n = by_command<notification>(in[0], in.size(), note_fits);
     if (d != direction::any) {
         outcome o = decode_as(in, d, out, meta);
         if (d == direction::command && !c && n) o.hints.push_back(hex2(in[0]) + " is the notification " + n->first);
@@ -86,17 +85,21 @@ outcome decode(std::span<const std::uint8_t> in, direction d, output& out, const
 
 std::string list(bool fields) {
     std::string out = "buwizz3 (BLE; byte 0 = command)\n commands (host -> device):\n";
-    list_variant<bw::command>(out, fields);
+    list_variant<command>(out, fields);
     out += " notifications (device -> host):\n";
-    list_variant<bw::notification>(out, fields);
+    list_variant<notification>(out, fields);
     return out;
 }
 
 }  // namespace
 
 const protocol& buwizz3_protocol() {
-    static const protocol p{
-        robowire::buwizz3::descriptor.name, robowire::buwizz3::descriptor.summary, true, list, decode, buwizz3_encode};
+    static const protocol p{robowire::buwizz3::descriptor.name,
+                            robowire::buwizz3::descriptor.summary,
+                            robowire::buwizz3::descriptor.has_directions,
+                            list,
+                            decode,
+                            buwizz3_encode};
     return p;
 }
 

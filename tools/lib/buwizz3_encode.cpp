@@ -5,8 +5,8 @@ namespace robowire::tools {
 
 outcome buwizz3_encode(std::string_view message, const std::vector<std::pair<std::string, std::string>>& values) {
     namespace bw = robowire::buwizz3;
-    if (auto o = encode_in<bw::command>(message, values)) return *o;
-    if (auto o = encode_in<bw::notification>(message, values)) return *o;
+    if (auto o = encode_in<bw::messages::to_device>(message, values)) return *o;
+    if (auto o = encode_in<bw::messages::from_device>(message, values)) return *o;
     return failure(exit_usage, "unknown message " + shorten(message) + " (robowire list buwizz3)");
 }
 

@@ -24,19 +24,23 @@ outcome decode(std::span<const std::uint8_t> in, direction, output& out, const r
 
 std::string list(bool fields) {
     std::string out = "navbot (BLE; 20-byte frames: 55 AA command remaining 00, 15 payload bytes)\n";
-    list_variant<nb::message>(out, fields);
+    list_variant<nb::messages::to_device>(out, fields);
     return out;
 }
 
 outcome encode(std::string_view message, const std::vector<std::pair<std::string, std::string>>& values) {
-    if (auto o = encode_in<nb::message>(message, values)) return *o;
+    if (auto o = encode_in<nb::messages::to_device>(message, values)) return *o;
     return failure(exit_usage, "unknown message " + shorten(message) + " (robowire list navbot)");
 }
 }  // namespace
 
 const protocol& navbot_protocol() {
-    static const protocol p{
-        robowire::navbot::descriptor.name, robowire::navbot::descriptor.summary, false, list, decode, encode};
+    static const protocol p{robowire::navbot::descriptor.name,
+                            robowire::navbot::descriptor.summary,
+                            robowire::navbot::descriptor.has_directions,
+                            list,
+                            decode,
+                            encode};
     return p;
 }
 

@@ -36,19 +36,23 @@ outcome decode(std::span<const std::uint8_t> in, direction, output& out, const r
 
 std::string list(bool fields) {
     std::string out = "osp (serial; FF AA DEV CMD P1..P4 55 77)\n";
-    list_variant<osp::message>(out, fields);
+    list_variant<osp::messages::to_device>(out, fields);
     return out;
 }
 
 outcome encode(std::string_view message, const std::vector<std::pair<std::string, std::string>>& values) {
-    if (auto o = encode_in<osp::message>(message, values)) return *o;
+    if (auto o = encode_in<osp::messages::to_device>(message, values)) return *o;
     return failure(exit_usage, "unknown message " + shorten(message) + " (robowire list osp)");
 }
 }  // namespace
 
 const protocol& osp_protocol() {
-    static const protocol p{
-        robowire::osp::descriptor.name, robowire::osp::descriptor.summary, false, list, decode, encode};
+    static const protocol p{robowire::osp::descriptor.name,
+                            robowire::osp::descriptor.summary,
+                            robowire::osp::descriptor.has_directions,
+                            list,
+                            decode,
+                            encode};
     return p;
 }
 

@@ -1,12 +1,15 @@
 // robowire/core/descriptor.hpp - what a protocol is, in one constexpr table:
-// name, summary, GATT characteristics, stream kind. Tools iterate these.
+// name, summary, GATT characteristics, stream kind, fuzz dictionary; and its
+// message variants per direction (types, beside it). Tools iterate these.
 #pragma once
 
 #include "config.hpp"  // first: the C++ version check
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string_view>
+#include <type_traits>
 
 #include "uuid.hpp"
 
@@ -33,14 +36,34 @@ struct characteristic {
     std::string_view label;  // e.g. "NAVBOT write characteristic"
 };
 
-// One protocol: what the command-line tool, the log reader, the schema and
-// the Python module know of it. Message variants stay in the protocol's
-// decode.hpp (types cannot sit in a constexpr table).
+// One fuzz dictionary entry: bytes that a message's table fixes at
+// consecutive offsets (markers, command bytes), 1..16 of them.
+struct fuzz_token {
+    std::uint8_t bytes[16];
+    std::uint8_t size;
+
+    constexpr std::span<const std::uint8_t> view() const noexcept { return {bytes, size}; }
+};
+
+// A protocol's message variants by direction (types cannot sit in the
+// constexpr descriptor): `messages` beside each `descriptor`. The same
+// variant both ways (the default) means one message set, no directions.
+template <class ToDevice, class FromDevice = ToDevice>
+struct message_variants {
+    using to_device = ToDevice;      // app -> device (BuWizz3: command)
+    using from_device = FromDevice;  // device -> app (BuWizz3: notification)
+    static constexpr bool has_directions = !std::is_same_v<ToDevice, FromDevice>;
+};
+
+// One protocol: what the command-line tool, the log reader, the schema, the
+// Python module and the fuzz dictionaries (fuzz/dict/) know of it.
 struct protocol_descriptor {
     std::string_view name;                            // lower case, e.g. "osp"
     std::string_view summary;                         // one line
     std::span<const characteristic> characteristics;  // empty: no GATT (serial)
     stream_kind stream;
+    bool has_directions;                     // the messages differ by direction (message_variants)
+    std::span<const fuzz_token> dictionary;  // every message's fixed byte runs (fuzz_tokens_v)
 
     // The characteristic with this UUID, or nullptr.
     constexpr const characteristic* find(const uuid128& u) const noexcept {

@@ -1,9 +1,12 @@
-// robowire/navbot/protocol.hpp - NAVBOT-ES02's descriptor: two GATT characteristics.
+// robowire/navbot/protocol.hpp - NAVBOT-ES02's descriptor: two GATT
+// characteristics; one message set (navbot::message) both ways.
 #pragma once
 
 #include "../core/config.hpp"  // first: the C++ version check
 
 #include "../core/descriptor.hpp"
+#include "../reflect.hpp"
+#include "decode.hpp"
 #include "frame.hpp"
 
 namespace robowire::navbot {
@@ -12,7 +15,12 @@ inline constexpr characteristic characteristics[] = {
     {write_uuid, gatt_direction::to_device, "NAVBOT write characteristic"},
     {notify_uuid, gatt_direction::from_device, "NAVBOT notify characteristic"},
 };
-inline constexpr protocol_descriptor descriptor{"navbot", "BLE; 20-byte frames", characteristics,
-                                                stream_kind::reassembler};
+using messages = message_variants<message>;
+inline constexpr protocol_descriptor descriptor{"navbot",
+                                                "BLE; 20-byte frames",
+                                                characteristics,
+                                                stream_kind::reassembler,
+                                                messages::has_directions,
+                                                fuzz_tokens_v<message>};
 
 }  // namespace robowire::navbot

@@ -1,12 +1,21 @@
-// robowire/osp/protocol.hpp - OSP's descriptor: a serial protocol, no GATT.
+// robowire/osp/protocol.hpp - OSP's descriptor: a serial protocol, no GATT;
+// one message set (requests and answers) both ways.
 #pragma once
 
 #include "../core/config.hpp"  // first: the C++ version check
 
 #include "../core/descriptor.hpp"
+#include "../reflect.hpp"
+#include "messages.hpp"
 
 namespace robowire::osp {
 
-inline constexpr protocol_descriptor descriptor{"osp", "serial; FF AA DEV CMD P1..P4 55 77", {}, stream_kind::scanner};
+using messages = message_variants<message>;
+inline constexpr protocol_descriptor descriptor{"osp",
+                                                "serial; FF AA DEV CMD P1..P4 55 77",
+                                                {},
+                                                stream_kind::scanner,
+                                                messages::has_directions,
+                                                fuzz_tokens_v<message>};
 
 }  // namespace robowire::osp
