@@ -87,22 +87,28 @@ inline bool short_decimal(double v, decimal& x) {
     return false;
 }
 
+// Keeps x's first p digits (p < x.n), one up in the last when `up`, and drops trailing zeros.
+inline void cut_digits(decimal& x, int p, bool up) {
+    x.n = p;
+    if (up) {
+        int i = p - 1;
+        while (i >= 0 && x.d[i] == '9') x.d[i--] = '0';
+        if (i < 0) {
+            x.d[0] = '1';
+            ++x.exp;
+        } else {
+            ++x.d[i];
+        }
+    }
+    while (x.n > 1 && x.d[x.n - 1] == '0') --x.n;
+}
 // Rounds x to p significant digits and drops trailing zeros; false when the decimal digits cannot decide.
 inline bool round_digits(decimal& x, int p) {
     if (x.n > p) {
         const char first = x.d[p];
         if (first == '4' || first == '5') return false;
-        x.n = p;
-        if (first > '5') {
-            int i = p - 1;
-            while (i >= 0 && x.d[i] == '9') x.d[i--] = '0';
-            if (i < 0) {
-                x.d[0] = '1';
-                ++x.exp;
-            } else {
-                ++x.d[i];
-            }
-        }
+        cut_digits(x, p, first > '5');
+        return true;
     }
     while (x.n > 1 && x.d[x.n - 1] == '0') --x.n;
     return true;
@@ -212,19 +218,7 @@ inline bool physical_decimal(std::int64_t raw, double scale, double offset, deci
 inline bool round_exact(decimal& x, int p) {
     if (x.n <= p) return true;
     if (x.d[p] == '5' && x.n == p + 1) return false;
-    const bool up = x.d[p] >= '5';
-    x.n = p;
-    if (up) {
-        int i = p - 1;
-        while (i >= 0 && x.d[i] == '9') x.d[i--] = '0';
-        if (i < 0) {
-            x.d[0] = '1';
-            ++x.exp;
-        } else {
-            ++x.d[i];
-        }
-    }
-    while (x.n > 1 && x.d[x.n - 1] == '0') --x.n;
+    cut_digits(x, p, x.d[p] >= '5');
     return true;
 }
 // The text's physical value: %.<p>g of tidy(raw x scale + offset), as put_g_tidy writes it.
