@@ -144,19 +144,114 @@ function decoder(m, id, skip) {
   body.push(`return ${obj};`);
   return `function ${id}(b,dv,n){\n${body.lines.join('\n')}\n}`;
 }
-// Encode's table of a field list.
-function encodeFields(fields) {
-  return fields.map((f) => {
-    const e = { name: f.name, offset: f.offset, type: f.type, value: f.value, count: f.count, array: f.array,
-      optional: f.optional, element_size: f.element_size, size: f.size };
-    if (f.bits) e.bits = f.bits;
-    if (f.valid) e.valid = f.valid;
-    if (f.enum) e.enum = Object.fromEntries(f.enum.map((x) => [x.name, x.value]));
-    if (f.capacity !== undefined) e.capacity = f.capacity;
-    if (f.physical) e.physical = f.physical;
-    if (f.record) e.record = encodeFields(f.record.fields);
-    return e;
-  });
+// ---- encode: a straight-line encoder per message, with the rules the
+// run-time encoder had (runtime.js: rawOf, putText, tailBytes and the error
+// helpers, all off the fast path).
+let encEnums = [];   // [name -> value] (what a name encodes to), one per enum field
+let encValues = [];  // [value -> 1] (the values an enum holds)
+const pexpr = (p) => (p.lit !== undefined ? J(p.lit) : p.expr);
+const pcat = (p, s) => (p.lit !== undefined ? { lit: p.lit + s } : { expr: `${p.expr}+${J(s)}` });
+const pidx = (p, i) => ({ expr: `${p.lit !== undefined ? J(`${p.lit}[`) : `${p.expr}+'['`}+${i}+']'` });
+class EncBody {
+  constructor(info) { this.lines = []; this.n = 0; this.info = info; this.float = false; }
+  tmp(c = 'x') { return `${c}${this.n++}`; }
+  push(s) { this.lines.push(s); }
+}
+function encElement(b, f, v, o, p) {
+  const M = b.info;
+  if (f.type === 'record') {
+    const r = b.tmp('r');
+    b.push(`const ${r}=${v}??{};if(typeof ${r}!=='object'||Array.isArray(${r}))notObject(${pexpr(p)});`);
+    encRecord(b, f.record.fields, r, o, p, false);
+    return;
+  }
+  if (f.type === 'text') {
+    b.push(`if(putText(out,${v},${o},${f.capacity},${pexpr(p)}))bad(E,${M},'value_out_of_range',${o},${pexpr(p)});`);
+    return;
+  }
+  if (f.type === 'tail') return;  // written once the frame exists
+  if (f.type === 'f32le') {
+    b.float = true;
+    b.push(`dv.setFloat32(${o},${v}===undefined?0:${v}===null?NaN:Number(${v}),true);`);
+    return;
+  }
+  const x = b.tmp();
+  let en = 'null';
+  if (f.enum) en = `EE${encEnums.push(Object.fromEntries(f.enum.map((e) => [e.name, e.value]))) - 1}`;
+  b.push(`let ${x}=${v};if(typeof ${x}!=='number')${x}=rawOf(${x},${en},${pexpr(p)});else if(!Number.isInteger(${x}))notInteger(${x},${pexpr(p)});`);
+  if (f.enum) {
+    const t = `EV${encValues.push(Object.fromEntries(f.enum.map((e) => [e.value, 1]))) - 1}`;
+    b.push(`if(${t}[${x}]===undefined)bad(E,${M},'invalid_enum',${o},${pexpr(p)});`);
+  } else if (f.valid) {
+    b.push(`if(${x}<${f.valid.min}||${x}>${f.valid.max})bad(E,${M},'value_out_of_range',${o},${pexpr(p)});`);
+  }
+  if (f.type === 'bits') {
+    const m = ((1 << f.bits.width) - 1) << f.bits.lo;
+    b.push(`out[${o}]=(out[${o}]&${~m & 0xff})|((${x}<<${f.bits.lo})&${m});`);
+    return;
+  }
+  // little-endian by byte (a Uint8Array store keeps the low 8 bits, as the tables' DataView stores did)
+  const bytes = f.element_size;
+  for (let k = 0; k < bytes; ++k) b.push(`out[${o}${k ? `+${k}` : ''}]=${k ? `${x}>>${8 * k}` : x};`);
+}
+function encRecord(b, fields, r, base, path, root) {
+  const names = fields.map((f) => f.name).join(', ');
+  const keys = new Set(fields.flatMap((f) => [f.name, `${f.name}_bits`, `${f.name}_text`, ...(f.physical ? [f.physical] : [])]));
+  const unknown = `unknownField(${b.info},${root ? "''" : pexpr(path)},k,${J(names)});`;
+  b.push(keys.size ? `for(const k in ${r})switch(k){${[...keys].map((k) => `case ${J(k)}:`).join('')}break;default:${unknown}}` : `for(const k in ${r})${unknown}`);
+  for (const f of fields) {
+    const o = base === '0' ? `${f.offset}` : `${base}+${f.offset}`;
+    const p = root ? { lit: f.name } : pcat(path, `.${f.name}`);
+    const v = b.tmp('v');
+    b.push(`const ${v}=${r}[${J(f.name)}];`);
+    if (f.optional) b.push(`if(${v}!==undefined&&${v}!==null){`);
+    if (f.array) {
+      const a = b.tmp('a');
+      b.push(`const ${a}=${v}??[];if(!Array.isArray(${a})&&!(${a} instanceof Uint8Array))notArray(${pexpr(p)},${f.count});`);
+      b.push(`if(${v}!==undefined&&${a}.length!==${f.count})badCount(${b.info},${pexpr(p)},${a}.length,${f.count},${root});`);
+      if (f.count <= 8) {
+        for (let i = 0; i < f.count; ++i) {
+          const e = b.tmp('e');
+          b.push(`const ${e}=${a}[${i}];`);
+          encElement(b, f, e, o === `${f.offset}` ? `${f.offset + i * f.element_size}` : `${o}+${i * f.element_size}`, pcat(p, `[${i}]`));
+        }
+      } else {
+        const i = b.tmp('i');
+        const e = b.tmp('e');
+        b.push(`for(let ${i}=0;${i}<${f.count};++${i}){const ${e}=${a}[${i}];`);
+        encElement(b, f, e, `${o}+${i}*${f.element_size}`, pidx(p, i));
+        b.push('}');
+      }
+    } else {
+      encElement(b, f, v, o, p);
+    }
+    if (f.optional) b.push('}');
+  }
+}
+// A message's encoder: its length (optional blocks given, the tail), fixed bytes, fields.
+function encoder(m, id, info) {
+  const b = new EncBody(info);
+  const variable = m.fields.some((f) => f.optional || f.type === 'tail');
+  b.push(`${variable ? 'let' : 'const'} size=${m.min_size};`);
+  let tail = null;
+  for (const f of m.fields) {
+    if (f.optional) b.push(`{const v=F[${J(f.name)}];if(v!==undefined&&v!==null)size=Math.max(size,${f.offset + f.size});}`);
+    if (f.type === 'tail') {
+      tail = f;
+      b.push(`const T=tailBytes(F[${J(f.name)}]);if(T.length>${f.capacity})throw messageError(E,${info},'too_long',${f.offset + f.capacity});size=Math.max(size,${f.offset}+T.length);`);
+    }
+  }
+  b.push('const out=new Uint8Array(size);');
+  const dvAt = b.lines.length;
+  for (const x of m.fixed) {
+    if (!variable && x.offset >= m.min_size) continue;
+    b.push(variable && x.offset >= m.min_size ? `if(size>${x.offset})out[${x.offset}]=${x.value};` : `out[${x.offset}]=${x.value};`);
+  }
+  encRecord(b, m.fields, 'F', '0', { lit: '' }, true);
+  if (tail) b.push(`out.set(T,${tail.offset});`);
+  b.push('return out;');
+  if (b.float) b.lines.splice(dvAt, 0, 'const dv=new DataView(out.buffer);');
+  return `function ${id}(F){\n${b.lines.join('\n')}\n}`;
 }
 
 // lib/schema.js: the schema itself, frozen.
@@ -167,6 +262,8 @@ export function schemaModule(schema) {
 export function generate(schema, p) {
   enumTables = [];
   flagValues = [];
+  encEnums = [];
+  encValues = [];
   const out = [];
   const keyed = p.key_offsets;
   const decs = p.messages.map((m, i) => decoder(m, `d${i}`, p.frame ? [] : keyed));
@@ -182,7 +279,7 @@ export function generate(schema, p) {
   }
   const keyless = p.messages.findIndex((m) => m.key.length === 0);
   out.push(`// Generated by js/gen/generate.js from js/schema.json (schema_version ${schema.schema_version}): ${p.name}, ${p.summary}. Do not edit.`);
-  out.push(`import { RobowireError, Fail, fail, hex, tidy, f32, text, bytesOf, messageError, keyError, plainError, encodeMessage, FrameScanner, FrameReassembler, fragmentPayload } from './runtime.js';`);
+  out.push(`import { RobowireError, Fail, fail, hex, tidy, f32, text, bytesOf, messageError, keyError, plainError, encodeWith, rawOf, notInteger, notObject, notArray, badCount, unknownField, bad, putText, tailBytes, FrameScanner, FrameReassembler, fragmentPayload } from './runtime.js';`);
   out.push(`const E=${J(errors)};`);
   out.push(`function flagName(values,v){return values[v]??String(v);}`);
   out.push(...infos);
@@ -232,11 +329,12 @@ return decodeAs(${J(directions[0])},b,dv,n);}`);
   }
   out.push(`// decode(bytes, {direction}) -> {type:'message', protocol, message, fields}; RobowireError otherwise.
 export function decode(bytes,{direction}={}){const b=bytesOf(bytes);return decodeAny(b,new DataView(b.buffer,b.byteOffset,b.length),b.length,direction);}`);
-  const enc = p.messages.map((m) => ({ name: m.name, direction: m.direction, fixed: m.fixed.map((x) => [x.offset, x.value]),
-    min_size: m.min_size, max_size: m.max_size, fields: encodeFields(m.fields) }));
-  out.push(`const ENC=${J(enc)};`);
+  out.push(...p.messages.map((m, i) => encoder(m, `e${i}`, `M${i}`)));
+  out.push(encEnums.map((t, i) => `const EE${i}=${J(t)};`).join('\n'));
+  out.push(encValues.map((t, i) => `const EV${i}=${J(t)};`).join('\n'));
+  out.push(`const ENCODERS=[${p.messages.map((_, i) => `e${i}`).join(',')}];const INDEX=new Map(NAMES.map((n,i)=>[n,i]));`);
   out.push(`// encode(message, fields) or encode(decoded) -> Uint8Array; RobowireError for a value it cannot hold.
-export function encode(message,fields){return encodeMessage(E,${J(p.name)},ENC,MI,message,fields);}`);
+export function encode(message,fields){return encodeWith(${J(p.name)},INDEX,ENCODERS,message,fields);}`);
   if (p.stream === 'scanner') {
     out.push(`// new Scanner(): .push(bytes) -> records of the frames found (as \`robowire scan ${p.name} --json\`); .counters.
 export class Scanner extends FrameScanner{constructor(){super(${p.frame.min_size},${J(p.frame.fixed.map((x) => [x.offset, x.value]))},decode,${J(p.name)});}}`);
