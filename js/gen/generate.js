@@ -196,9 +196,11 @@ function encElement(b, f, v, o, p) {
 }
 function encRecord(b, fields, r, base, path, root) {
   const names = fields.map((f) => f.name).join(', ');
-  const keys = new Set(fields.flatMap((f) => [f.name, `${f.name}_bits`, `${f.name}_text`, ...(f.physical ? [f.physical] : [])]));
+  // the field names first: what an object given by hand holds (an if chain: cheaper than a switch or a Set)
+  const keys = new Set([...fields.map((f) => f.name),
+    ...fields.flatMap((f) => [`${f.name}_bits`, `${f.name}_text`, ...(f.physical ? [f.physical] : [])])]);
   const unknown = `unknownField(${b.info},${root ? "''" : pexpr(path)},k,${J(names)});`;
-  b.push(keys.size ? `for(const k in ${r})switch(k){${[...keys].map((k) => `case ${J(k)}:`).join('')}break;default:${unknown}}` : `for(const k in ${r})${unknown}`);
+  b.push(`for(const k in ${r})${keys.size ? `if(${[...keys].map((k) => `k!==${J(k)}`).join('&&')})` : ''}${unknown}`);
   for (const f of fields) {
     const o = base === '0' ? `${f.offset}` : `${base}+${f.offset}`;
     const p = root ? { lit: f.name } : pcat(path, `.${f.name}`);
@@ -334,7 +336,9 @@ export function decode(bytes,{direction}={}){const b=bytesOf(bytes);return decod
   out.push(encValues.map((t, i) => `const EV${i}=${J(t)};`).join('\n'));
   out.push(`const ENCODERS=[${p.messages.map((_, i) => `e${i}`).join(',')}];const INDEX=new Map(NAMES.map((n,i)=>[n,i]));`);
   out.push(`// encode(message, fields) or encode(decoded) -> Uint8Array; RobowireError for a value it cannot hold.
-export function encode(message,fields){return encodeWith(${J(p.name)},INDEX,ENCODERS,message,fields);}`);
+export function encode(message,fields){
+if(typeof message==='string'&&typeof fields==='object'&&fields!==null)switch(message){${p.messages.map((m, i) => `case ${J(m.name)}:return e${i}(fields);`).join('')}}
+return encodeWith(${J(p.name)},INDEX,ENCODERS,message,fields);}`);
   if (p.stream === 'scanner') {
     out.push(`// new Scanner(): .push(bytes) -> records of the frames found (as \`robowire scan ${p.name} --json\`); .counters.
 export class Scanner extends FrameScanner{constructor(){super(${p.frame.min_size},${J(p.frame.fixed.map((x) => [x.offset, x.value]))},decode,${J(p.name)});}}`);

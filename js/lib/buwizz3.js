@@ -377,7 +377,7 @@ function e0(F){
 const size=13;
 const out=new Uint8Array(size);
 out[0]=32;
-for(const k in F)switch(k){case "name":case "name_bits":case "name_text":break;default:unknownField(M0,'',k,"name");}
+for(const k in F)if(k!=="name"&&k!=="name_bits"&&k!=="name_text")unknownField(M0,'',k,"name");
 const v0=F["name"];
 if(putText(out,v0,1,12,"name"))bad(E,M0,'value_out_of_range',1,"name");
 return out;
@@ -386,7 +386,7 @@ function e1(F){
 const size=10;
 const out=new Uint8Array(size);
 out[0]=33;
-for(const k in F)switch(k){case "enabled":case "enabled_bits":case "enabled_text":case "idle_timeout_s":case "idle_timeout_s_bits":case "idle_timeout_s_text":case "idle_timeout_s_physical":case "shallow_sleep_timeout_s":case "shallow_sleep_timeout_s_bits":case "shallow_sleep_timeout_s_text":case "shallow_sleep_timeout_s_physical":break;default:unknownField(M1,'',k,"enabled, idle_timeout_s, shallow_sleep_timeout_s");}
+for(const k in F)if(k!=="enabled"&&k!=="idle_timeout_s"&&k!=="shallow_sleep_timeout_s"&&k!=="enabled_bits"&&k!=="enabled_text"&&k!=="idle_timeout_s_bits"&&k!=="idle_timeout_s_text"&&k!=="idle_timeout_s_physical"&&k!=="shallow_sleep_timeout_s_bits"&&k!=="shallow_sleep_timeout_s_text"&&k!=="shallow_sleep_timeout_s_physical")unknownField(M1,'',k,"enabled, idle_timeout_s, shallow_sleep_timeout_s");
 const v0=F["enabled"];
 let x1=v0;if(typeof x1!=='number')x1=rawOf(x1,null,"enabled");else if(!Number.isInteger(x1))notInteger(x1,"enabled");
 if(x1<0||x1>1)bad(E,M1,'value_out_of_range',1,"enabled");
@@ -412,7 +412,7 @@ const size=25;
 const out=new Uint8Array(size);
 const dv=new DataView(out.buffer);
 out[0]=34;
-for(const k in F)switch(k){case "factors":case "factors_bits":case "factors_text":break;default:unknownField(M2,'',k,"factors");}
+for(const k in F)if(k!=="factors"&&k!=="factors_bits"&&k!=="factors_text")unknownField(M2,'',k,"factors");
 const v0=F["factors"];
 const a1=v0??[];if(!Array.isArray(a1)&&!(a1 instanceof Uint8Array))notArray("factors",6);
 if(v0!==undefined&&a1.length!==6)badCount(M2,"factors",a1.length,6,true);
@@ -441,7 +441,7 @@ function e4(F){
 const size=9;
 const out=new Uint8Array(size);
 out[0]=48;
-for(const k in F)switch(k){case "power":case "power_bits":case "power_text":case "power_physical":case "brake_flags":case "brake_flags_bits":case "brake_flags_text":case "lut_disable_flags":case "lut_disable_flags_bits":case "lut_disable_flags_text":break;default:unknownField(M4,'',k,"power, brake_flags, lut_disable_flags");}
+for(const k in F)if(k!=="power"&&k!=="brake_flags"&&k!=="lut_disable_flags"&&k!=="power_bits"&&k!=="power_text"&&k!=="power_physical"&&k!=="brake_flags_bits"&&k!=="brake_flags_text"&&k!=="lut_disable_flags_bits"&&k!=="lut_disable_flags_text")unknownField(M4,'',k,"power, brake_flags, lut_disable_flags");
 const v0=F["power"];
 const a1=v0??[];if(!Array.isArray(a1)&&!(a1 instanceof Uint8Array))notArray("power",6);
 if(v0!==undefined&&a1.length!==6)badCount(M4,"power",a1.length,6,true);
@@ -483,7 +483,7 @@ function e5(F){
 const size=21;
 const out=new Uint8Array(size);
 out[0]=49;
-for(const k in F)switch(k){case "reference":case "reference_bits":case "reference_text":case "power":case "power_bits":case "power_text":case "power_physical":case "brake_flags":case "brake_flags_bits":case "brake_flags_text":case "lut_disable_flags":case "lut_disable_flags_bits":case "lut_disable_flags_text":break;default:unknownField(M5,'',k,"reference, power, brake_flags, lut_disable_flags");}
+for(const k in F)if(k!=="reference"&&k!=="power"&&k!=="brake_flags"&&k!=="lut_disable_flags"&&k!=="reference_bits"&&k!=="reference_text"&&k!=="power_bits"&&k!=="power_text"&&k!=="power_physical"&&k!=="brake_flags_bits"&&k!=="brake_flags_text"&&k!=="lut_disable_flags_bits"&&k!=="lut_disable_flags_text")unknownField(M5,'',k,"reference, power, brake_flags, lut_disable_flags");
 const v0=F["reference"];
 const a1=v0??[];if(!Array.isArray(a1)&&!(a1 instanceof Uint8Array))notArray("reference",4);
 if(v0!==undefined&&a1.length!==4)badCount(M5,"reference",a1.length,4,true);
@@ -540,7 +540,7 @@ function e6(F){
 const size=2;
 const out=new Uint8Array(size);
 out[0]=50;
-for(const k in F)switch(k){case "period_ms":case "period_ms_bits":case "period_ms_text":case "period_ms_physical":break;default:unknownField(M6,'',k,"period_ms");}
+for(const k in F)if(k!=="period_ms"&&k!=="period_ms_bits"&&k!=="period_ms_text"&&k!=="period_ms_physical")unknownField(M6,'',k,"period_ms");
 const v0=F["period_ms"];
 let x1=v0;if(typeof x1!=='number')x1=rawOf(x1,null,"period_ms");else if(!Number.isInteger(x1))notInteger(x1,"period_ms");
 if(x1<20||x1>255)bad(E,M6,'value_out_of_range',1,"period_ms");
@@ -551,7 +551,7 @@ function e7(F){
 const size=13;
 const out=new Uint8Array(size);
 out[0]=51;
-for(const k in F)switch(k){case "ramp_up":case "ramp_up_bits":case "ramp_up_text":case "ramp_up_physical":case "ramp_down":case "ramp_down_bits":case "ramp_down_text":case "ramp_down_physical":break;default:unknownField(M7,'',k,"ramp_up, ramp_down");}
+for(const k in F)if(k!=="ramp_up"&&k!=="ramp_down"&&k!=="ramp_up_bits"&&k!=="ramp_up_text"&&k!=="ramp_up_physical"&&k!=="ramp_down_bits"&&k!=="ramp_down_text"&&k!=="ramp_down_physical")unknownField(M7,'',k,"ramp_up, ramp_down");
 const v0=F["ramp_up"];
 const a1=v0??[];if(!Array.isArray(a1)&&!(a1 instanceof Uint8Array))notArray("ramp_up",6);
 if(v0!==undefined&&a1.length!==6)badCount(M7,"ramp_up",a1.length,6,true);
@@ -612,7 +612,7 @@ function e8(F){
 const size=2;
 const out=new Uint8Array(size);
 out[0]=52;
-for(const k in F)switch(k){case "mode":case "mode_bits":case "mode_text":break;default:unknownField(M8,'',k,"mode");}
+for(const k in F)if(k!=="mode"&&k!=="mode_bits"&&k!=="mode_text")unknownField(M8,'',k,"mode");
 const v0=F["mode"];
 let x1=v0;if(typeof x1!=='number')x1=rawOf(x1,null,"mode");else if(!Number.isInteger(x1))notInteger(x1,"mode");
 if(x1<0||x1>254)bad(E,M8,'value_out_of_range',1,"mode");
@@ -623,7 +623,7 @@ function e9(F){
 const size=2;
 const out=new Uint8Array(size);
 out[0]=53;
-for(const k in F)switch(k){case "timeout_s":case "timeout_s_bits":case "timeout_s_text":case "timeout_s_physical":break;default:unknownField(M9,'',k,"timeout_s");}
+for(const k in F)if(k!=="timeout_s"&&k!=="timeout_s_bits"&&k!=="timeout_s_text"&&k!=="timeout_s_physical")unknownField(M9,'',k,"timeout_s");
 const v0=F["timeout_s"];
 let x1=v0;if(typeof x1!=='number')x1=rawOf(x1,null,"timeout_s");else if(!Number.isInteger(x1))notInteger(x1,"timeout_s");
 if(x1<0||x1>255)bad(E,M9,'value_out_of_range',1,"timeout_s");
@@ -636,14 +636,14 @@ let size=1;
 {const v=F["blink"];if(v!==undefined&&v!==null)size=Math.max(size,17);}
 const out=new Uint8Array(size);
 out[0]=54;
-for(const k in F)switch(k){case "colors":case "colors_bits":case "colors_text":case "blink":case "blink_bits":case "blink_text":break;default:unknownField(M10,'',k,"colors, blink");}
+for(const k in F)if(k!=="colors"&&k!=="blink"&&k!=="colors_bits"&&k!=="colors_text"&&k!=="blink_bits"&&k!=="blink_text")unknownField(M10,'',k,"colors, blink");
 const v0=F["colors"];
 if(v0!==undefined&&v0!==null){
 const a1=v0??[];if(!Array.isArray(a1)&&!(a1 instanceof Uint8Array))notArray("colors",4);
 if(v0!==undefined&&a1.length!==4)badCount(M10,"colors",a1.length,4,true);
 const e2=a1[0];
 const r3=e2??{};if(typeof r3!=='object'||Array.isArray(r3))notObject("colors[0]");
-for(const k in r3)switch(k){case "r":case "r_bits":case "r_text":case "g":case "g_bits":case "g_text":case "b":case "b_bits":case "b_text":break;default:unknownField(M10,"colors[0]",k,"r, g, b");}
+for(const k in r3)if(k!=="r"&&k!=="g"&&k!=="b"&&k!=="r_bits"&&k!=="r_text"&&k!=="g_bits"&&k!=="g_text"&&k!=="b_bits"&&k!=="b_text")unknownField(M10,"colors[0]",k,"r, g, b");
 const v4=r3["r"];
 let x5=v4;if(typeof x5!=='number')x5=rawOf(x5,null,"colors[0].r");else if(!Number.isInteger(x5))notInteger(x5,"colors[0].r");
 if(x5<0||x5>255)bad(E,M10,'value_out_of_range',1+0,"colors[0].r");
@@ -658,7 +658,7 @@ if(x9<0||x9>255)bad(E,M10,'value_out_of_range',1+2,"colors[0].b");
 out[1+2]=x9;
 const e10=a1[1];
 const r11=e10??{};if(typeof r11!=='object'||Array.isArray(r11))notObject("colors[1]");
-for(const k in r11)switch(k){case "r":case "r_bits":case "r_text":case "g":case "g_bits":case "g_text":case "b":case "b_bits":case "b_text":break;default:unknownField(M10,"colors[1]",k,"r, g, b");}
+for(const k in r11)if(k!=="r"&&k!=="g"&&k!=="b"&&k!=="r_bits"&&k!=="r_text"&&k!=="g_bits"&&k!=="g_text"&&k!=="b_bits"&&k!=="b_text")unknownField(M10,"colors[1]",k,"r, g, b");
 const v12=r11["r"];
 let x13=v12;if(typeof x13!=='number')x13=rawOf(x13,null,"colors[1].r");else if(!Number.isInteger(x13))notInteger(x13,"colors[1].r");
 if(x13<0||x13>255)bad(E,M10,'value_out_of_range',4+0,"colors[1].r");
@@ -673,7 +673,7 @@ if(x17<0||x17>255)bad(E,M10,'value_out_of_range',4+2,"colors[1].b");
 out[4+2]=x17;
 const e18=a1[2];
 const r19=e18??{};if(typeof r19!=='object'||Array.isArray(r19))notObject("colors[2]");
-for(const k in r19)switch(k){case "r":case "r_bits":case "r_text":case "g":case "g_bits":case "g_text":case "b":case "b_bits":case "b_text":break;default:unknownField(M10,"colors[2]",k,"r, g, b");}
+for(const k in r19)if(k!=="r"&&k!=="g"&&k!=="b"&&k!=="r_bits"&&k!=="r_text"&&k!=="g_bits"&&k!=="g_text"&&k!=="b_bits"&&k!=="b_text")unknownField(M10,"colors[2]",k,"r, g, b");
 const v20=r19["r"];
 let x21=v20;if(typeof x21!=='number')x21=rawOf(x21,null,"colors[2].r");else if(!Number.isInteger(x21))notInteger(x21,"colors[2].r");
 if(x21<0||x21>255)bad(E,M10,'value_out_of_range',7+0,"colors[2].r");
@@ -688,7 +688,7 @@ if(x25<0||x25>255)bad(E,M10,'value_out_of_range',7+2,"colors[2].b");
 out[7+2]=x25;
 const e26=a1[3];
 const r27=e26??{};if(typeof r27!=='object'||Array.isArray(r27))notObject("colors[3]");
-for(const k in r27)switch(k){case "r":case "r_bits":case "r_text":case "g":case "g_bits":case "g_text":case "b":case "b_bits":case "b_text":break;default:unknownField(M10,"colors[3]",k,"r, g, b");}
+for(const k in r27)if(k!=="r"&&k!=="g"&&k!=="b"&&k!=="r_bits"&&k!=="r_text"&&k!=="g_bits"&&k!=="g_text"&&k!=="b_bits"&&k!=="b_text")unknownField(M10,"colors[3]",k,"r, g, b");
 const v28=r27["r"];
 let x29=v28;if(typeof x29!=='number')x29=rawOf(x29,null,"colors[3].r");else if(!Number.isInteger(x29))notInteger(x29,"colors[3].r");
 if(x29<0||x29>255)bad(E,M10,'value_out_of_range',10+0,"colors[3].r");
@@ -708,7 +708,7 @@ const a35=v34??[];if(!Array.isArray(a35)&&!(a35 instanceof Uint8Array))notArray(
 if(v34!==undefined&&a35.length!==4)badCount(M10,"blink",a35.length,4,true);
 const e36=a35[0];
 const r37=e36??{};if(typeof r37!=='object'||Array.isArray(r37))notObject("blink[0]");
-for(const k in r37)switch(k){case "frequency_hz":case "frequency_hz_bits":case "frequency_hz_text":case "frequency_hz_physical":case "duty":case "duty_bits":case "duty_text":case "duty_physical":break;default:unknownField(M10,"blink[0]",k,"frequency_hz, duty");}
+for(const k in r37)if(k!=="frequency_hz"&&k!=="duty"&&k!=="frequency_hz_bits"&&k!=="frequency_hz_text"&&k!=="frequency_hz_physical"&&k!=="duty_bits"&&k!=="duty_text"&&k!=="duty_physical")unknownField(M10,"blink[0]",k,"frequency_hz, duty");
 const v38=r37["frequency_hz"];
 let x39=v38;if(typeof x39!=='number')x39=rawOf(x39,null,"blink[0].frequency_hz");else if(!Number.isInteger(x39))notInteger(x39,"blink[0].frequency_hz");
 if(x39<0||x39>15)bad(E,M10,'value_out_of_range',13+0,"blink[0].frequency_hz");
@@ -719,7 +719,7 @@ if(x41<0||x41>15)bad(E,M10,'value_out_of_range',13+0,"blink[0].duty");
 out[13+0]=(out[13+0]&240)|((x41<<0)&15);
 const e42=a35[1];
 const r43=e42??{};if(typeof r43!=='object'||Array.isArray(r43))notObject("blink[1]");
-for(const k in r43)switch(k){case "frequency_hz":case "frequency_hz_bits":case "frequency_hz_text":case "frequency_hz_physical":case "duty":case "duty_bits":case "duty_text":case "duty_physical":break;default:unknownField(M10,"blink[1]",k,"frequency_hz, duty");}
+for(const k in r43)if(k!=="frequency_hz"&&k!=="duty"&&k!=="frequency_hz_bits"&&k!=="frequency_hz_text"&&k!=="frequency_hz_physical"&&k!=="duty_bits"&&k!=="duty_text"&&k!=="duty_physical")unknownField(M10,"blink[1]",k,"frequency_hz, duty");
 const v44=r43["frequency_hz"];
 let x45=v44;if(typeof x45!=='number')x45=rawOf(x45,null,"blink[1].frequency_hz");else if(!Number.isInteger(x45))notInteger(x45,"blink[1].frequency_hz");
 if(x45<0||x45>15)bad(E,M10,'value_out_of_range',14+0,"blink[1].frequency_hz");
@@ -730,7 +730,7 @@ if(x47<0||x47>15)bad(E,M10,'value_out_of_range',14+0,"blink[1].duty");
 out[14+0]=(out[14+0]&240)|((x47<<0)&15);
 const e48=a35[2];
 const r49=e48??{};if(typeof r49!=='object'||Array.isArray(r49))notObject("blink[2]");
-for(const k in r49)switch(k){case "frequency_hz":case "frequency_hz_bits":case "frequency_hz_text":case "frequency_hz_physical":case "duty":case "duty_bits":case "duty_text":case "duty_physical":break;default:unknownField(M10,"blink[2]",k,"frequency_hz, duty");}
+for(const k in r49)if(k!=="frequency_hz"&&k!=="duty"&&k!=="frequency_hz_bits"&&k!=="frequency_hz_text"&&k!=="frequency_hz_physical"&&k!=="duty_bits"&&k!=="duty_text"&&k!=="duty_physical")unknownField(M10,"blink[2]",k,"frequency_hz, duty");
 const v50=r49["frequency_hz"];
 let x51=v50;if(typeof x51!=='number')x51=rawOf(x51,null,"blink[2].frequency_hz");else if(!Number.isInteger(x51))notInteger(x51,"blink[2].frequency_hz");
 if(x51<0||x51>15)bad(E,M10,'value_out_of_range',15+0,"blink[2].frequency_hz");
@@ -741,7 +741,7 @@ if(x53<0||x53>15)bad(E,M10,'value_out_of_range',15+0,"blink[2].duty");
 out[15+0]=(out[15+0]&240)|((x53<<0)&15);
 const e54=a35[3];
 const r55=e54??{};if(typeof r55!=='object'||Array.isArray(r55))notObject("blink[3]");
-for(const k in r55)switch(k){case "frequency_hz":case "frequency_hz_bits":case "frequency_hz_text":case "frequency_hz_physical":case "duty":case "duty_bits":case "duty_text":case "duty_physical":break;default:unknownField(M10,"blink[3]",k,"frequency_hz, duty");}
+for(const k in r55)if(k!=="frequency_hz"&&k!=="duty"&&k!=="frequency_hz_bits"&&k!=="frequency_hz_text"&&k!=="frequency_hz_physical"&&k!=="duty_bits"&&k!=="duty_text"&&k!=="duty_physical")unknownField(M10,"blink[3]",k,"frequency_hz, duty");
 const v56=r55["frequency_hz"];
 let x57=v56;if(typeof x57!=='number')x57=rawOf(x57,null,"blink[3].frequency_hz");else if(!Number.isInteger(x57))notInteger(x57,"blink[3].frequency_hz");
 if(x57<0||x57>15)bad(E,M10,'value_out_of_range',16+0,"blink[3].frequency_hz");
@@ -757,7 +757,7 @@ function e11(F){
 const size=2;
 const out=new Uint8Array(size);
 out[0]=55;
-for(const k in F)switch(k){case "setting":case "setting_bits":case "setting_text":break;default:unknownField(M11,'',k,"setting");}
+for(const k in F)if(k!=="setting"&&k!=="setting_bits"&&k!=="setting_text")unknownField(M11,'',k,"setting");
 const v0=F["setting"];
 let x1=v0;if(typeof x1!=='number')x1=rawOf(x1,EE0,"setting");else if(!Number.isInteger(x1))notInteger(x1,"setting");
 if(EV0[x1]===undefined)bad(E,M11,'invalid_enum',1,"setting");
@@ -768,7 +768,7 @@ function e12(F){
 const size=7;
 const out=new Uint8Array(size);
 out[0]=56;
-for(const k in F)switch(k){case "limit_raw":case "limit_raw_bits":case "limit_raw_text":case "limit":break;default:unknownField(M12,'',k,"limit_raw");}
+for(const k in F)if(k!=="limit_raw"&&k!=="limit_raw_bits"&&k!=="limit_raw_text"&&k!=="limit")unknownField(M12,'',k,"limit_raw");
 const v0=F["limit_raw"];
 const a1=v0??[];if(!Array.isArray(a1)&&!(a1 instanceof Uint8Array))notArray("limit_raw",6);
 if(v0!==undefined&&a1.length!==6)badCount(M12,"limit_raw",a1.length,6,true);
@@ -803,7 +803,7 @@ const size=7;
 const out=new Uint8Array(size);
 out[0]=64;
 out[1]=16;
-for(const k in F)switch(k){case "channel":case "channel_bits":case "channel_text":case "baudrate":case "baudrate_bits":case "baudrate_text":case "baudrate_physical":break;default:unknownField(M13,'',k,"channel, baudrate");}
+for(const k in F)if(k!=="channel"&&k!=="baudrate"&&k!=="channel_bits"&&k!=="channel_text"&&k!=="baudrate_bits"&&k!=="baudrate_text"&&k!=="baudrate_physical")unknownField(M13,'',k,"channel, baudrate");
 const v0=F["channel"];
 let x1=v0;if(typeof x1!=='number')x1=rawOf(x1,null,"channel");else if(!Number.isInteger(x1))notInteger(x1,"channel");
 if(x1<0||x1>255)bad(E,M13,'value_out_of_range',2,"channel");
@@ -821,7 +821,7 @@ function e14(F){
 const size=5;
 const out=new Uint8Array(size);
 out[0]=80;
-for(const k in F)switch(k){case "function":case "function_bits":case "function_text":break;default:unknownField(M14,'',k,"function");}
+for(const k in F)if(k!=="function"&&k!=="function_bits"&&k!=="function_text")unknownField(M14,'',k,"function");
 const v0=F["function"];
 const a1=v0??[];if(!Array.isArray(a1)&&!(a1 instanceof Uint8Array))notArray("function",4);
 if(v0!==undefined&&a1.length!==4)badCount(M14,"function",a1.length,4,true);
@@ -847,7 +847,7 @@ function e15(F){
 const size=2;
 const out=new Uint8Array(size);
 out[0]=81;
-for(const k in F)switch(k){case "port":case "port_bits":case "port_text":break;default:unknownField(M15,'',k,"port");}
+for(const k in F)if(k!=="port"&&k!=="port_bits"&&k!=="port_text")unknownField(M15,'',k,"port");
 const v0=F["port"];
 let x1=v0;if(typeof x1!=='number')x1=rawOf(x1,null,"port");else if(!Number.isInteger(x1))notInteger(x1,"port");
 if(x1<0||x1>4)bad(E,M15,'value_out_of_range',1,"port");
@@ -858,7 +858,7 @@ function e16(F){
 const size=17;
 const out=new Uint8Array(size);
 out[0]=82;
-for(const k in F)switch(k){case "reference":case "reference_bits":case "reference_text":break;default:unknownField(M16,'',k,"reference");}
+for(const k in F)if(k!=="reference"&&k!=="reference_bits"&&k!=="reference_text")unknownField(M16,'',k,"reference");
 const v0=F["reference"];
 const a1=v0??[];if(!Array.isArray(a1)&&!(a1 instanceof Uint8Array))notArray("reference",4);
 if(v0!==undefined&&a1.length!==4)badCount(M16,"reference",a1.length,4,true);
@@ -897,7 +897,7 @@ const size=38;
 const out=new Uint8Array(size);
 const dv=new DataView(out.buffer);
 out[0]=83;
-for(const k in F)switch(k){case "port":case "port_bits":case "port_text":case "out_lp":case "out_lp_bits":case "out_lp_text":case "d_lp":case "d_lp_bits":case "d_lp_text":case "speed_lp":case "speed_lp_bits":case "speed_lp_text":case "kp":case "kp_bits":case "kp_text":case "ki":case "ki_bits":case "ki_text":case "kd":case "kd_bits":case "kd_text":case "lim_i":case "lim_i_bits":case "lim_i_text":case "reference_rate_limit":case "reference_rate_limit_bits":case "reference_rate_limit_text":case "lim_out":case "lim_out_bits":case "lim_out_text":case "deadband_out":case "deadband_out_bits":case "deadband_out_text":case "deadband_out_boost":case "deadband_out_boost_bits":case "deadband_out_boost_text":case "mode":case "mode_bits":case "mode_text":break;default:unknownField(M17,'',k,"port, out_lp, d_lp, speed_lp, kp, ki, kd, lim_i, reference_rate_limit, lim_out, deadband_out, deadband_out_boost, mode");}
+for(const k in F)if(k!=="port"&&k!=="out_lp"&&k!=="d_lp"&&k!=="speed_lp"&&k!=="kp"&&k!=="ki"&&k!=="kd"&&k!=="lim_i"&&k!=="reference_rate_limit"&&k!=="lim_out"&&k!=="deadband_out"&&k!=="deadband_out_boost"&&k!=="mode"&&k!=="port_bits"&&k!=="port_text"&&k!=="out_lp_bits"&&k!=="out_lp_text"&&k!=="d_lp_bits"&&k!=="d_lp_text"&&k!=="speed_lp_bits"&&k!=="speed_lp_text"&&k!=="kp_bits"&&k!=="kp_text"&&k!=="ki_bits"&&k!=="ki_text"&&k!=="kd_bits"&&k!=="kd_text"&&k!=="lim_i_bits"&&k!=="lim_i_text"&&k!=="reference_rate_limit_bits"&&k!=="reference_rate_limit_text"&&k!=="lim_out_bits"&&k!=="lim_out_text"&&k!=="deadband_out_bits"&&k!=="deadband_out_text"&&k!=="deadband_out_boost_bits"&&k!=="deadband_out_boost_text"&&k!=="mode_bits"&&k!=="mode_text")unknownField(M17,'',k,"port, out_lp, d_lp, speed_lp, kp, ki, kd, lim_i, reference_rate_limit, lim_out, deadband_out, deadband_out_boost, mode");
 const v0=F["port"];
 let x1=v0;if(typeof x1!=='number')x1=rawOf(x1,null,"port");else if(!Number.isInteger(x1))notInteger(x1,"port");
 if(x1<0||x1>3)bad(E,M17,'value_out_of_range',1,"port");
@@ -956,7 +956,7 @@ let size=54;
 const out=new Uint8Array(size);
 const dv=new DataView(out.buffer);
 out[0]=1;
-for(const k in F)switch(k){case "flags":case "flags_bits":case "flags_text":case "battery_voltage_raw":case "battery_voltage_raw_bits":case "battery_voltage_raw_text":case "battery_voltage":case "motor_current_raw":case "motor_current_raw_bits":case "motor_current_raw_text":case "motor_current":case "temperature_c":case "temperature_c_bits":case "temperature_c_text":case "temperature_c_physical":case "accel_raw":case "accel_raw_bits":case "accel_raw_text":case "accel":case "bootloader_response":case "bootloader_response_bits":case "bootloader_response_text":case "charge_current_ma":case "charge_current_ma_bits":case "charge_current_ma_text":case "charge_current_ma_physical":case "pu_motors":case "pu_motors_bits":case "pu_motors_text":case "pid_state":case "pid_state_bits":case "pid_state_text":break;default:unknownField(M20,'',k,"flags, battery_voltage_raw, motor_current_raw, temperature_c, accel_raw, bootloader_response, charge_current_ma, pu_motors, pid_state");}
+for(const k in F)if(k!=="flags"&&k!=="battery_voltage_raw"&&k!=="motor_current_raw"&&k!=="temperature_c"&&k!=="accel_raw"&&k!=="bootloader_response"&&k!=="charge_current_ma"&&k!=="pu_motors"&&k!=="pid_state"&&k!=="flags_bits"&&k!=="flags_text"&&k!=="battery_voltage_raw_bits"&&k!=="battery_voltage_raw_text"&&k!=="battery_voltage"&&k!=="motor_current_raw_bits"&&k!=="motor_current_raw_text"&&k!=="motor_current"&&k!=="temperature_c_bits"&&k!=="temperature_c_text"&&k!=="temperature_c_physical"&&k!=="accel_raw_bits"&&k!=="accel_raw_text"&&k!=="accel"&&k!=="bootloader_response_bits"&&k!=="bootloader_response_text"&&k!=="charge_current_ma_bits"&&k!=="charge_current_ma_text"&&k!=="charge_current_ma_physical"&&k!=="pu_motors_bits"&&k!=="pu_motors_text"&&k!=="pid_state_bits"&&k!=="pid_state_text")unknownField(M20,'',k,"flags, battery_voltage_raw, motor_current_raw, temperature_c, accel_raw, bootloader_response, charge_current_ma, pu_motors, pid_state");
 const v0=F["flags"];
 let x1=v0;if(typeof x1!=='number')x1=rawOf(x1,null,"flags");else if(!Number.isInteger(x1))notInteger(x1,"flags");
 if(x1<0||x1>255)bad(E,M20,'value_out_of_range',1,"flags");
@@ -1016,7 +1016,7 @@ out[14]=x27;
 out[14+1]=x27>>8;
 const v28=F["bootloader_response"];
 const r29=v28??{};if(typeof r29!=='object'||Array.isArray(r29))notObject("bootloader_response");
-for(const k in r29)switch(k){case "command":case "command_bits":case "command_text":case "code":case "code_bits":case "code_text":case "data":case "data_bits":case "data_text":break;default:unknownField(M20,"bootloader_response",k,"command, code, data");}
+for(const k in r29)if(k!=="command"&&k!=="code"&&k!=="data"&&k!=="command_bits"&&k!=="command_text"&&k!=="code_bits"&&k!=="code_text"&&k!=="data_bits"&&k!=="data_text")unknownField(M20,"bootloader_response",k,"command, code, data");
 const v30=r29["command"];
 let x31=v30;if(typeof x31!=='number')x31=rawOf(x31,null,"bootloader_response.command");else if(!Number.isInteger(x31))notInteger(x31,"bootloader_response.command");
 if(x31<0||x31>255)bad(E,M20,'value_out_of_range',16+0,"bootloader_response.command");
@@ -1049,7 +1049,7 @@ const a45=v44??[];if(!Array.isArray(a45)&&!(a45 instanceof Uint8Array))notArray(
 if(v44!==undefined&&a45.length!==4)badCount(M20,"pu_motors",a45.length,4,true);
 const e46=a45[0];
 const r47=e46??{};if(typeof r47!=='object'||Array.isArray(r47))notObject("pu_motors[0]");
-for(const k in r47)switch(k){case "type":case "type_bits":case "type_text":case "velocity":case "velocity_bits":case "velocity_text":case "absolute_position":case "absolute_position_bits":case "absolute_position_text":case "absolute_position_physical":case "position":case "position_bits":case "position_text":case "position_physical":break;default:unknownField(M20,"pu_motors[0]",k,"type, velocity, absolute_position, position");}
+for(const k in r47)if(k!=="type"&&k!=="velocity"&&k!=="absolute_position"&&k!=="position"&&k!=="type_bits"&&k!=="type_text"&&k!=="velocity_bits"&&k!=="velocity_text"&&k!=="absolute_position_bits"&&k!=="absolute_position_text"&&k!=="absolute_position_physical"&&k!=="position_bits"&&k!=="position_text"&&k!=="position_physical")unknownField(M20,"pu_motors[0]",k,"type, velocity, absolute_position, position");
 const v48=r47["type"];
 let x49=v48;if(typeof x49!=='number')x49=rawOf(x49,null,"pu_motors[0].type");else if(!Number.isInteger(x49))notInteger(x49,"pu_motors[0].type");
 if(x49<0||x49>255)bad(E,M20,'value_out_of_range',22+0,"pu_motors[0].type");
@@ -1072,7 +1072,7 @@ out[22+4+2]=x55>>16;
 out[22+4+3]=x55>>24;
 const e56=a45[1];
 const r57=e56??{};if(typeof r57!=='object'||Array.isArray(r57))notObject("pu_motors[1]");
-for(const k in r57)switch(k){case "type":case "type_bits":case "type_text":case "velocity":case "velocity_bits":case "velocity_text":case "absolute_position":case "absolute_position_bits":case "absolute_position_text":case "absolute_position_physical":case "position":case "position_bits":case "position_text":case "position_physical":break;default:unknownField(M20,"pu_motors[1]",k,"type, velocity, absolute_position, position");}
+for(const k in r57)if(k!=="type"&&k!=="velocity"&&k!=="absolute_position"&&k!=="position"&&k!=="type_bits"&&k!=="type_text"&&k!=="velocity_bits"&&k!=="velocity_text"&&k!=="absolute_position_bits"&&k!=="absolute_position_text"&&k!=="absolute_position_physical"&&k!=="position_bits"&&k!=="position_text"&&k!=="position_physical")unknownField(M20,"pu_motors[1]",k,"type, velocity, absolute_position, position");
 const v58=r57["type"];
 let x59=v58;if(typeof x59!=='number')x59=rawOf(x59,null,"pu_motors[1].type");else if(!Number.isInteger(x59))notInteger(x59,"pu_motors[1].type");
 if(x59<0||x59>255)bad(E,M20,'value_out_of_range',30+0,"pu_motors[1].type");
@@ -1095,7 +1095,7 @@ out[30+4+2]=x65>>16;
 out[30+4+3]=x65>>24;
 const e66=a45[2];
 const r67=e66??{};if(typeof r67!=='object'||Array.isArray(r67))notObject("pu_motors[2]");
-for(const k in r67)switch(k){case "type":case "type_bits":case "type_text":case "velocity":case "velocity_bits":case "velocity_text":case "absolute_position":case "absolute_position_bits":case "absolute_position_text":case "absolute_position_physical":case "position":case "position_bits":case "position_text":case "position_physical":break;default:unknownField(M20,"pu_motors[2]",k,"type, velocity, absolute_position, position");}
+for(const k in r67)if(k!=="type"&&k!=="velocity"&&k!=="absolute_position"&&k!=="position"&&k!=="type_bits"&&k!=="type_text"&&k!=="velocity_bits"&&k!=="velocity_text"&&k!=="absolute_position_bits"&&k!=="absolute_position_text"&&k!=="absolute_position_physical"&&k!=="position_bits"&&k!=="position_text"&&k!=="position_physical")unknownField(M20,"pu_motors[2]",k,"type, velocity, absolute_position, position");
 const v68=r67["type"];
 let x69=v68;if(typeof x69!=='number')x69=rawOf(x69,null,"pu_motors[2].type");else if(!Number.isInteger(x69))notInteger(x69,"pu_motors[2].type");
 if(x69<0||x69>255)bad(E,M20,'value_out_of_range',38+0,"pu_motors[2].type");
@@ -1118,7 +1118,7 @@ out[38+4+2]=x75>>16;
 out[38+4+3]=x75>>24;
 const e76=a45[3];
 const r77=e76??{};if(typeof r77!=='object'||Array.isArray(r77))notObject("pu_motors[3]");
-for(const k in r77)switch(k){case "type":case "type_bits":case "type_text":case "velocity":case "velocity_bits":case "velocity_text":case "absolute_position":case "absolute_position_bits":case "absolute_position_text":case "absolute_position_physical":case "position":case "position_bits":case "position_text":case "position_physical":break;default:unknownField(M20,"pu_motors[3]",k,"type, velocity, absolute_position, position");}
+for(const k in r77)if(k!=="type"&&k!=="velocity"&&k!=="absolute_position"&&k!=="position"&&k!=="type_bits"&&k!=="type_text"&&k!=="velocity_bits"&&k!=="velocity_text"&&k!=="absolute_position_bits"&&k!=="absolute_position_text"&&k!=="absolute_position_physical"&&k!=="position_bits"&&k!=="position_text"&&k!=="position_physical")unknownField(M20,"pu_motors[3]",k,"type, velocity, absolute_position, position");
 const v78=r77["type"];
 let x79=v78;if(typeof x79!=='number')x79=rawOf(x79,null,"pu_motors[3].type");else if(!Number.isInteger(x79))notInteger(x79,"pu_motors[3].type");
 if(x79<0||x79>255)bad(E,M20,'value_out_of_range',46+0,"pu_motors[3].type");
@@ -1142,7 +1142,7 @@ out[46+4+3]=x85>>24;
 const v86=F["pid_state"];
 if(v86!==undefined&&v86!==null){
 const r87=v86??{};if(typeof r87!=='object'||Array.isArray(r87))notObject("pid_state");
-for(const k in r87)switch(k){case "process_value":case "process_value_bits":case "process_value_text":case "error":case "error_bits":case "error_text":case "output":case "output_bits":case "output_text":case "integrator":case "integrator_bits":case "integrator_text":case "motor_output":case "motor_output_bits":case "motor_output_text":break;default:unknownField(M20,"pid_state",k,"process_value, error, output, integrator, motor_output");}
+for(const k in r87)if(k!=="process_value"&&k!=="error"&&k!=="output"&&k!=="integrator"&&k!=="motor_output"&&k!=="process_value_bits"&&k!=="process_value_text"&&k!=="error_bits"&&k!=="error_text"&&k!=="output_bits"&&k!=="output_text"&&k!=="integrator_bits"&&k!=="integrator_text"&&k!=="motor_output_bits"&&k!=="motor_output_text")unknownField(M20,"pid_state",k,"process_value, error, output, integrator, motor_output");
 const v88=r87["process_value"];
 dv.setFloat32(54+0,v88===undefined?0:v88===null?NaN:Number(v88),true);
 const v89=r87["error"];
@@ -1165,7 +1165,7 @@ const size=25;
 const out=new Uint8Array(size);
 const dv=new DataView(out.buffer);
 out[0]=35;
-for(const k in F)switch(k){case "factors":case "factors_bits":case "factors_text":break;default:unknownField(M21,'',k,"factors");}
+for(const k in F)if(k!=="factors"&&k!=="factors_bits"&&k!=="factors_text")unknownField(M21,'',k,"factors");
 const v0=F["factors"];
 const a1=v0??[];if(!Array.isArray(a1)&&!(a1 instanceof Uint8Array))notArray("factors",6);
 if(v0!==undefined&&a1.length!==6)badCount(M21,"factors",a1.length,6,true);
@@ -1188,7 +1188,7 @@ let size=1;
 const T=tailBytes(F["data"]);if(T.length>128)throw messageError(E,M22,'too_long',129);size=Math.max(size,1+T.length);
 const out=new Uint8Array(size);
 out[0]=172;
-for(const k in F)switch(k){case "data":case "data_bits":case "data_text":break;default:unknownField(M22,'',k,"data");}
+for(const k in F)if(k!=="data"&&k!=="data_bits"&&k!=="data_text")unknownField(M22,'',k,"data");
 const v0=F["data"];
 out.set(T,1);
 return out;
@@ -1207,4 +1207,6 @@ const EV4={"0":1,"16":1,"20":1,"21":1,"22":1};
 const EV5={"0":1,"16":1,"20":1,"21":1,"22":1};
 const ENCODERS=[e0,e1,e2,e3,e4,e5,e6,e7,e8,e9,e10,e11,e12,e13,e14,e15,e16,e17,e18,e19,e20,e21,e22];const INDEX=new Map(NAMES.map((n,i)=>[n,i]));
 // encode(message, fields) or encode(decoded) -> Uint8Array; RobowireError for a value it cannot hold.
-export function encode(message,fields){return encodeWith("buwizz3",INDEX,ENCODERS,message,fields);}
+export function encode(message,fields){
+if(typeof message==='string'&&typeof fields==='object'&&fields!==null)switch(message){case "set_device_name":return e0(fields);case "set_motion_wakeup":return e1(fields);case "set_accel_calibration":return e2(fields);case "read_accel_calibration":return e3(fields);case "set_motor_data":return e4(fields);case "set_motor_data_extended":return e5(fields);case "set_data_period":return e6(fields);case "set_ramp_rates":return e7(fields);case "set_motor_timeout":return e8(fields);case "activate_watchdog":return e9(fields);case "set_led_status":return e10(fields);case "set_accel_lpf":return e11(fields);case "set_current_limits":return e12(fields);case "set_uart_baudrate":return e13(fields);case "set_pu_port_function":return e14(fields);case "enable_pid_reporting":return e15(fields);case "set_servo_reference":return e16(fields);case "set_pid_parameters":return e17(fields);case "activate_shelf_mode":return e18(fields);case "check_charger_settings":return e19(fields);case "status":return e20(fields);case "accel_calibration":return e21(fields);case "charger_settings":return e22(fields);}
+return encodeWith("buwizz3",INDEX,ENCODERS,message,fields);}

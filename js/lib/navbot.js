@@ -118,7 +118,7 @@ out[0]=85;
 out[1]=170;
 out[2]=16;
 out[3]=0;
-for(const k in F)switch(k){case "roll":case "roll_bits":case "roll_text":case "roll_physical":case "height":case "height_bits":case "height_text":case "height_physical":case "pitch":case "pitch_bits":case "pitch_text":case "pitch_physical":case "yaw":case "yaw_bits":case "yaw_text":case "yaw_physical":case "switch_a":case "switch_a_bits":case "switch_a_text":case "switch_b":case "switch_b_bits":case "switch_b_text":case "switch_c":case "switch_c_bits":case "switch_c_text":case "switch_d":case "switch_d_bits":case "switch_d_text":case "ball_x":case "ball_x_bits":case "ball_x_text":case "ball_y":case "ball_y_bits":case "ball_y_text":break;default:unknownField(M0,'',k,"roll, height, pitch, yaw, switch_a, switch_b, switch_c, switch_d, ball_x, ball_y");}
+for(const k in F)if(k!=="roll"&&k!=="height"&&k!=="pitch"&&k!=="yaw"&&k!=="switch_a"&&k!=="switch_b"&&k!=="switch_c"&&k!=="switch_d"&&k!=="ball_x"&&k!=="ball_y"&&k!=="roll_bits"&&k!=="roll_text"&&k!=="roll_physical"&&k!=="height_bits"&&k!=="height_text"&&k!=="height_physical"&&k!=="pitch_bits"&&k!=="pitch_text"&&k!=="pitch_physical"&&k!=="yaw_bits"&&k!=="yaw_text"&&k!=="yaw_physical"&&k!=="switch_a_bits"&&k!=="switch_a_text"&&k!=="switch_b_bits"&&k!=="switch_b_text"&&k!=="switch_c_bits"&&k!=="switch_c_text"&&k!=="switch_d_bits"&&k!=="switch_d_text"&&k!=="ball_x_bits"&&k!=="ball_x_text"&&k!=="ball_y_bits"&&k!=="ball_y_text")unknownField(M0,'',k,"roll, height, pitch, yaw, switch_a, switch_b, switch_c, switch_d, ball_x, ball_y");
 const v0=F["roll"];
 let x1=v0;if(typeof x1!=='number')x1=rawOf(x1,null,"roll");else if(!Number.isInteger(x1))notInteger(x1,"roll");
 if(x1<-100||x1>100)bad(E,M0,'value_out_of_range',5,"roll");
@@ -166,7 +166,7 @@ const size=20;
 const out=new Uint8Array(size);
 out[0]=85;
 out[1]=170;
-for(const k in F)switch(k){case "command":case "command_bits":case "command_text":case "remaining":case "remaining_bits":case "remaining_text":case "payload":case "payload_bits":case "payload_text":break;default:unknownField(M1,'',k,"command, remaining, payload");}
+for(const k in F)if(k!=="command"&&k!=="remaining"&&k!=="payload"&&k!=="command_bits"&&k!=="command_text"&&k!=="remaining_bits"&&k!=="remaining_text"&&k!=="payload_bits"&&k!=="payload_text")unknownField(M1,'',k,"command, remaining, payload");
 const v0=F["command"];
 let x1=v0;if(typeof x1!=='number')x1=rawOf(x1,null,"command");else if(!Number.isInteger(x1))notInteger(x1,"command");
 if(x1<0||x1>255)bad(E,M1,'value_out_of_range',2,"command");
@@ -195,7 +195,9 @@ const EV2={"0":1,"1":1};
 const EV3={"0":1,"1":1,"2":1};
 const ENCODERS=[e0,e1];const INDEX=new Map(NAMES.map((n,i)=>[n,i]));
 // encode(message, fields) or encode(decoded) -> Uint8Array; RobowireError for a value it cannot hold.
-export function encode(message,fields){return encodeWith("navbot",INDEX,ENCODERS,message,fields);}
+export function encode(message,fields){
+if(typeof message==='string'&&typeof fields==='object'&&fields!==null)switch(message){case "maneuver":return e0(fields);case "frame":return e1(fields);}
+return encodeWith("navbot",INDEX,ENCODERS,message,fields);}
 const LAYOUT={"size":20,"command":2,"remaining":3,"payload":5,"payload_size":15};const FIXED=[[0,85],[1,170]];
 function frameOnly(b){const n=b.length;try{return dframe(b,new DataView(b.buffer,b.byteOffset,n),n);}catch(e){if(e instanceof Fail)throw messageError(E,MF,e.code,e.offset);throw e;}}
 // new Reassembler(): .push(frame) -> records as `robowire scan navbot --json` prints a frame's line; .counters.

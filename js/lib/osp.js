@@ -208,7 +208,7 @@ out[2]=0;
 out[3]=17;
 out[8]=85;
 out[9]=119;
-for(const k in F)switch(k){case "type":case "type_bits":case "type_text":break;default:unknownField(M1,'',k,"type");}
+for(const k in F)if(k!=="type"&&k!=="type_bits"&&k!=="type_text")unknownField(M1,'',k,"type");
 const v0=F["type"];
 let x1=v0;if(typeof x1!=='number')x1=rawOf(x1,EE0,"type");else if(!Number.isInteger(x1))notInteger(x1,"type");
 if(EV0[x1]===undefined)bad(E,M1,'invalid_enum',4,"type");
@@ -224,7 +224,7 @@ out[2]=1;
 out[3]=2;
 out[8]=85;
 out[9]=119;
-for(const k in F)switch(k){case "joint":case "joint_bits":case "joint_text":case "angle":case "angle_bits":case "angle_text":case "angle_physical":break;default:unknownField(M2,'',k,"joint, angle");}
+for(const k in F)if(k!=="joint"&&k!=="angle"&&k!=="joint_bits"&&k!=="joint_text"&&k!=="angle_bits"&&k!=="angle_text"&&k!=="angle_physical")unknownField(M2,'',k,"joint, angle");
 const v0=F["joint"];
 let x1=v0;if(typeof x1!=='number')x1=rawOf(x1,null,"joint");else if(!Number.isInteger(x1))notInteger(x1,"joint");
 if(x1<0||x1>255)bad(E,M2,'value_out_of_range',4,"joint");
@@ -293,7 +293,7 @@ out[2]=2;
 out[3]=17;
 out[8]=85;
 out[9]=119;
-for(const k in F)switch(k){case "soc_raw":case "soc_raw_bits":case "soc_raw_text":case "soc":break;default:unknownField(M7,'',k,"soc_raw");}
+for(const k in F)if(k!=="soc_raw"&&k!=="soc_raw_bits"&&k!=="soc_raw_text"&&k!=="soc")unknownField(M7,'',k,"soc_raw");
 const v0=F["soc_raw"];
 let x1=v0;if(typeof x1!=='number')x1=rawOf(x1,null,"soc_raw");else if(!Number.isInteger(x1))notInteger(x1,"soc_raw");
 if(x1<0||x1>65535)bad(E,M7,'value_out_of_range',4,"soc_raw");
@@ -310,7 +310,7 @@ out[2]=2;
 out[3]=18;
 out[8]=85;
 out[9]=119;
-for(const k in F)switch(k){case "centivolts":case "centivolts_bits":case "centivolts_text":case "centivolts_physical":break;default:unknownField(M8,'',k,"centivolts");}
+for(const k in F)if(k!=="centivolts"&&k!=="centivolts_bits"&&k!=="centivolts_text"&&k!=="centivolts_physical")unknownField(M8,'',k,"centivolts");
 const v0=F["centivolts"];
 let x1=v0;if(typeof x1!=='number')x1=rawOf(x1,null,"centivolts");else if(!Number.isInteger(x1))notInteger(x1,"centivolts");
 if(x1<-32768||x1>32767)bad(E,M8,'value_out_of_range',4,"centivolts");
@@ -327,7 +327,7 @@ out[2]=2;
 out[3]=19;
 out[8]=85;
 out[9]=119;
-for(const k in F)switch(k){case "milliamps":case "milliamps_bits":case "milliamps_text":case "milliamps_physical":break;default:unknownField(M9,'',k,"milliamps");}
+for(const k in F)if(k!=="milliamps"&&k!=="milliamps_bits"&&k!=="milliamps_text"&&k!=="milliamps_physical")unknownField(M9,'',k,"milliamps");
 const v0=F["milliamps"];
 let x1=v0;if(typeof x1!=='number')x1=rawOf(x1,null,"milliamps");else if(!Number.isInteger(x1))notInteger(x1,"milliamps");
 if(x1<-32768||x1>32767)bad(E,M9,'value_out_of_range',4,"milliamps");
@@ -344,7 +344,7 @@ out[2]=2;
 out[3]=20;
 out[8]=85;
 out[9]=119;
-for(const k in F)switch(k){case "state":case "state_bits":case "state_text":case "flags":case "flags_bits":case "flags_text":break;default:unknownField(M10,'',k,"state, flags");}
+for(const k in F)if(k!=="state"&&k!=="flags"&&k!=="state_bits"&&k!=="state_text"&&k!=="flags_bits"&&k!=="flags_text")unknownField(M10,'',k,"state, flags");
 const v0=F["state"];
 let x1=v0;if(typeof x1!=='number')x1=rawOf(x1,EE1,"state");else if(!Number.isInteger(x1))notInteger(x1,"state");
 if(EV1[x1]===undefined)bad(E,M10,'invalid_enum',4,"state");
@@ -361,6 +361,8 @@ const EV0={"0":1,"1":1,"2":1,"3":1};
 const EV1={"0":1,"1":1,"2":1,"3":1,"4":1};
 const ENCODERS=[e0,e1,e2,e3,e4,e5,e6,e7,e8,e9,e10];const INDEX=new Map(NAMES.map((n,i)=>[n,i]));
 // encode(message, fields) or encode(decoded) -> Uint8Array; RobowireError for a value it cannot hold.
-export function encode(message,fields){return encodeWith("osp",INDEX,ENCODERS,message,fields);}
+export function encode(message,fields){
+if(typeof message==='string'&&typeof fields==='object'&&fields!==null)switch(message){case "request_device_type":return e0(fields);case "device_type":return e1(fields);case "set_angle":return e2(fields);case "request_soc":return e3(fields);case "request_voltage":return e4(fields);case "request_current":return e5(fields);case "request_status":return e6(fields);case "soc":return e7(fields);case "voltage":return e8(fields);case "current":return e9(fields);case "status":return e10(fields);}
+return encodeWith("osp",INDEX,ENCODERS,message,fields);}
 // new Scanner(): .push(bytes) -> records of the frames found (as `robowire scan osp --json`); .counters.
 export class Scanner extends FrameScanner{constructor(){super(10,[[0,255],[1,170],[8,85],[9,119]],decode,"osp");}}
