@@ -293,7 +293,8 @@ export function generate(schema, p) {
   out.push(`const KEYS=${J(byDir)};`);
   out.push(`const LEN=${J(p.messages.map((m) => [m.min_size, m.max_input]))};`);
   out.push(`const KO=${J(keyed)};const LAST=${keyed[keyed.length - 1]};`);
-  out.push(`function keyAt(b){return KO.map((o)=>b[o]).join(',');}`);
+  // one key byte: the byte itself indexes KEYS (no string built per frame)
+  out.push(keyed.length === 1 ? `function keyAt(b){return b[${keyed[0]}];}` : `function keyAt(b){return KO.map((o)=>b[o]).join(',');}`);
   out.push(`function result(i,fields){return{type:'message',protocol:${J(p.name)},message:NAMES[i],fields};}`);
   out.push(`function run(i,b,dv,n){try{return result(i,D[i](b,dv,n));}catch(e){if(e instanceof Fail)throw messageError(E,MI[i],e.code,e.offset);throw e;}}`);
   if (p.frame) {

@@ -353,7 +353,7 @@ const NAMES=["set_device_name","set_motion_wakeup","set_accel_calibration","read
 const KEYS={"command":{"32":0,"33":1,"34":2,"35":3,"48":4,"49":5,"50":6,"51":7,"52":8,"53":9,"54":10,"55":11,"56":12,"64":13,"80":14,"81":15,"82":16,"83":17,"161":18,"172":19},"notification":{"1":20,"35":21,"172":22}};
 const LEN=[[13,13],[10,10],[25,25],[1,1],[9,9],[21,21],[2,2],[13,13],[2,2],[2,2],[1,17],[2,2],[7,7],[7,7],[5,5],[2,2],[17,17],[38,38],[1,1],[1,1],[54,129],[25,25],[1,129]];
 const KO=[0];const LAST=0;
-function keyAt(b){return KO.map((o)=>b[o]).join(',');}
+function keyAt(b){return b[0];}
 function result(i,fields){return{type:'message',protocol:"buwizz3",message:NAMES[i],fields};}
 function run(i,b,dv,n){try{return result(i,D[i](b,dv,n));}catch(e){if(e instanceof Fail)throw messageError(E,MI[i],e.code,e.offset);throw e;}}
 function decodeAs(d,b,dv,n){if(n<=LAST)throw plainError(E,'too_short',n);const i=KEYS[d][keyAt(b)];if(i===undefined)throw keyError(E,KO.map((o)=>b[o]),'unknown_message',KO[0]);return run(i,b,dv,n);}

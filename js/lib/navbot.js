@@ -72,7 +72,7 @@ const NAMES=["maneuver","frame"];
 const KEYS={"any":{"16":0}};
 const LEN=[[20,20],[20,20]];
 const KO=[2];const LAST=2;
-function keyAt(b){return KO.map((o)=>b[o]).join(',');}
+function keyAt(b){return b[2];}
 function result(i,fields){return{type:'message',protocol:"navbot",message:NAMES[i],fields};}
 function run(i,b,dv,n){try{return result(i,D[i](b,dv,n));}catch(e){if(e instanceof Fail)throw messageError(E,MI[i],e.code,e.offset);throw e;}}
 function dframe(b,dv,n){
