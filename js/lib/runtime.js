@@ -108,6 +108,18 @@ export function rawOf(v, names, path) {
   if (!Number.isInteger(raw)) notInteger(v, path);
   return raw;
 }
+// An integer field's value that is not a valid number as it is: its raw
+// value (rawOf), checked against the enum's values (numbers: value -> 1)
+// or min..max; throws for a value the field cannot hold.
+export function intSlow(v, names, numbers, min, max, errors, m, o, path) {
+  let raw;
+  if (typeof v !== 'number') raw = rawOf(v, names, path);
+  else if (!Number.isInteger(v)) notInteger(v, path);
+  else raw = v;
+  if (numbers ? numbers[raw] === undefined : raw < min || raw > max)
+    bad(errors, m, numbers ? 'invalid_enum' : 'value_out_of_range', o, path);
+  return raw;
+}
 export function notObject(path) {
   throw new TypeError(`encode: ${path}: an object expected`);
 }
