@@ -73,6 +73,11 @@ function recordExpr(body, fields, base) {
   const obj = body.tmp();
   const entries = [];  // [key, expression] of the literal
   const after = [];    // statements run once the object exists
+  const tail = [];     // [key, 'null'] of optional blocks, in the literal (no shape change when set)
+  // optional blocks as keys of the literal (null, set when present): when
+  // each is one key and no text key follows, the key order stays the same
+  const inLiteral = !fields.some((f) => f.as_text_when) &&
+    fields.filter((f) => f.optional).every((f) => !f.physical && !(f.flag_bits && !f.array && f.value === 'int'));
   for (const f of fields) {
     const o = base + f.offset;
     const key = J(f.name);
@@ -97,7 +102,11 @@ function recordExpr(body, fields, base) {
       own.push([key, value]);
     }
     body.n = inner.n;
-    if (f.optional) {
+    if (f.optional && inLiteral) {
+      tail.push([key, 'null']);
+      after.push(`if(n>${o}){if(n<${o + f.size})fail('bad_length',${o});`,
+        ...inner.lines, ...own.map(([k, v]) => `${obj}[${k}]=${v};`), '}');
+    } else if (f.optional) {
       after.push(`if(n<=${o})${obj}[${key}]=null;else{if(n<${o + f.size})fail('bad_length',${o});`,
         ...inner.lines, ...own.map(([k, v]) => `${obj}[${k}]=${v};`), '}');
     } else {
@@ -109,6 +118,7 @@ function recordExpr(body, fields, base) {
       after.push(`if(${obj}[${J(w.field)}]===${J(w.value)}){let e=${o};while(e<${o + f.size}&&b[e]!==0)++e;${obj}[${J(`${f.name}_text`)}]=text(b,${o},e);}`);
     }
   }
+  entries.push(...tail);
   body.push(`const ${obj}={${entries.map(([k, v]) => `${k}:${v}`).join(',')}};`);
   body.lines.push(...after);
   return obj;

@@ -140,8 +140,8 @@ return v0;
 }
 function d10(b,dv,n){
 if(n<1)fail('too_short',n);if(n>17)fail('too_long',17);
-const v0={};
-if(n<=1)v0["colors"]=null;else{if(n<13)fail('bad_length',1);
+const v0={"colors":null,"blink":null};
+if(n>1){if(n<13)fail('bad_length',1);
 const v2=b[1];
 const v3=b[2];
 const v4=b[3];
@@ -160,7 +160,7 @@ const v16=b[12];
 const v13={"r":v14,"g":v15,"b":v16};
 v0["colors"]=[v1,v5,v9,v13];
 }
-if(n<=13)v0["blink"]=null;else{if(n<17)fail('bad_length',13);
+if(n>13){if(n<17)fail('bad_length',13);
 const v18=((b[13]>>4)&15);
 const v19=v18;
 const v20=((b[13]>>0)&15);
@@ -322,8 +322,8 @@ const v51=v50;
 const v52=dv.getInt32(50,true);
 const v53=v52;
 const v47={"type":v48,"velocity":v49,"absolute_position":v51,"absolute_position_physical":{value:v51,unit:"deg"},"position":v53,"position_physical":{value:v53,unit:"deg"}};
-const v0={"flags":v2,"flags_bits":{"error":((v2>>0)&1)!==0,"motion_wakeup":((v2>>1)&1)!==0,"long_range_phy":((v2>>2)&1)!==0,"battery":flagName(FV0,((v2>>3)&3)),"charging":((v2>>5)&1)!==0,"usb_connected":((v2>>6)&1)!==0},"battery_voltage_raw":v4,"battery_voltage":{value:tidy(v4*0.05+9),unit:"V"},"motor_current_raw":v11,"motor_current":{value:v11.map((x)=>tidy(x*0.015+0)),unit:"A"},"temperature_c":v13,"temperature_c_physical":{value:v13,unit:"degC"},"accel_raw":v17,"accel":{value:v17.map((x)=>tidy(x*0.488+0)),unit:"mg"},"bootloader_response":v18,"charge_current_ma":v25,"charge_current_ma_physical":{value:v25,unit:"mA"},"pu_motors":[v26,v33,v40,v47]};
-if(n<=54)v0["pid_state"]=null;else{if(n<68)fail('bad_length',54);
+const v0={"flags":v2,"flags_bits":{"error":((v2>>0)&1)!==0,"motion_wakeup":((v2>>1)&1)!==0,"long_range_phy":((v2>>2)&1)!==0,"battery":flagName(FV0,((v2>>3)&3)),"charging":((v2>>5)&1)!==0,"usb_connected":((v2>>6)&1)!==0},"battery_voltage_raw":v4,"battery_voltage":{value:tidy(v4*0.05+9),unit:"V"},"motor_current_raw":v11,"motor_current":{value:v11.map((x)=>tidy(x*0.015+0)),unit:"A"},"temperature_c":v13,"temperature_c_physical":{value:v13,unit:"degC"},"accel_raw":v17,"accel":{value:v17.map((x)=>tidy(x*0.488+0)),unit:"mg"},"bootloader_response":v18,"charge_current_ma":v25,"charge_current_ma_physical":{value:v25,unit:"mA"},"pu_motors":[v26,v33,v40,v47],"pid_state":null};
+if(n>54){if(n<68)fail('bad_length',54);
 const v55=(b[66]<<24>>24);
 const v56=(b[67]<<24>>24);
 const v54={"process_value":f32(dv,54),"error":f32(dv,58),"output":f32(dv,62),"integrator":v55,"motor_output":v56};
