@@ -73,6 +73,11 @@ function recordExpr(body, fields, base) {
   const obj = body.tmp();
   const entries = [];  // [key, expression] of the literal
   const after = [];    // statements run once the object exists
+  const tail = [];     // [key, 'null'] of optional blocks, in the literal (no shape change when set)
+  // optional blocks as keys of the literal (null, set when present): when
+  // each is one key and no text key follows, the key order stays the same
+  const inLiteral = !fields.some((f) => f.as_text_when) &&
+    fields.filter((f) => f.optional).every((f) => !f.physical && !(f.flag_bits && !f.array && f.value === 'int'));
   for (const f of fields) {
     const o = base + f.offset;
     const key = J(f.name);
@@ -97,7 +102,11 @@ function recordExpr(body, fields, base) {
       own.push([key, value]);
     }
     body.n = inner.n;
-    if (f.optional) {
+    if (f.optional && inLiteral) {
+      tail.push([key, 'null']);
+      after.push(`if(n>${o}){if(n<${o + f.size})fail('bad_length',${o});`,
+        ...inner.lines, ...own.map(([k, v]) => `${obj}[${k}]=${v};`), '}');
+    } else if (f.optional) {
       after.push(`if(n<=${o})${obj}[${key}]=null;else{if(n<${o + f.size})fail('bad_length',${o});`,
         ...inner.lines, ...own.map(([k, v]) => `${obj}[${k}]=${v};`), '}');
     } else {
@@ -109,6 +118,7 @@ function recordExpr(body, fields, base) {
       after.push(`if(${obj}[${J(w.field)}]===${J(w.value)}){let e=${o};while(e<${o + f.size}&&b[e]!==0)++e;${obj}[${J(`${f.name}_text`)}]=text(b,${o},e);}`);
     }
   }
+  entries.push(...tail);
   body.push(`const ${obj}={${entries.map(([k, v]) => `${k}:${v}`).join(',')}};`);
   body.lines.push(...after);
   return obj;
@@ -144,19 +154,119 @@ function decoder(m, id, skip) {
   body.push(`return ${obj};`);
   return `function ${id}(b,dv,n){\n${body.lines.join('\n')}\n}`;
 }
-// Encode's table of a field list.
-function encodeFields(fields) {
-  return fields.map((f) => {
-    const e = { name: f.name, offset: f.offset, type: f.type, value: f.value, count: f.count, array: f.array,
-      optional: f.optional, element_size: f.element_size, size: f.size };
-    if (f.bits) e.bits = f.bits;
-    if (f.valid) e.valid = f.valid;
-    if (f.enum) e.enum = Object.fromEntries(f.enum.map((x) => [x.name, x.value]));
-    if (f.capacity !== undefined) e.capacity = f.capacity;
-    if (f.physical) e.physical = f.physical;
-    if (f.record) e.record = encodeFields(f.record.fields);
-    return e;
-  });
+// ---- encode: a straight-line encoder per message, with the rules the
+// run-time encoder had (runtime.js: rawOf, putText, tailBytes and the error
+// helpers, all off the fast path).
+let encEnums = [];   // [name -> value] (what a name encodes to), one per enum field
+let encValues = [];  // [value -> 1] (the values an enum holds)
+const pexpr = (p) => (p.lit !== undefined ? J(p.lit) : p.expr);
+const pcat = (p, s) => (p.lit !== undefined ? { lit: p.lit + s } : { expr: `${p.expr}+${J(s)}` });
+const pidx = (p, i) => ({ expr: `${p.lit !== undefined ? J(`${p.lit}[`) : `${p.expr}+'['`}+${i}+']'` });
+class EncBody {
+  constructor(info) { this.lines = []; this.n = 0; this.info = info; this.float = false; }
+  tmp(c = 'x') { return `${c}${this.n++}`; }
+  push(s) { this.lines.push(s); }
+}
+function encElement(b, f, v, o, p) {
+  const M = b.info;
+  if (f.type === 'record') {
+    const r = b.tmp('r');
+    b.push(`const ${r}=${v}??{};if(typeof ${r}!=='object'||Array.isArray(${r}))notObject(${pexpr(p)});`);
+    encRecord(b, f.record.fields, r, o, p, false);
+    return;
+  }
+  if (f.type === 'text') {
+    b.push(`if(putText(out,${v},${o},${f.capacity},${pexpr(p)}))bad(E,${M},'value_out_of_range',${o},${pexpr(p)});`);
+    return;
+  }
+  if (f.type === 'tail') return;  // written once the frame exists
+  if (f.type === 'f32le') {
+    b.float = true;
+    b.push(`dv.setFloat32(${o},${v}===undefined?0:${v}===null?NaN:Number(${v}),true);`);
+    return;
+  }
+  const x = b.tmp();
+  let en = 'null';
+  if (f.enum) en = `EE${encEnums.push(Object.fromEntries(f.enum.map((e) => [e.name, e.value]))) - 1}`;
+  // fast path: a number that is a valid value; anything else (not given, a
+  // boolean, a name, not an integer, out of range) goes to intSlow
+  if (f.enum) {
+    const t = `EV${encValues.push(Object.fromEntries(f.enum.map((e) => [e.value, 1]))) - 1}`;
+    b.push(`const ${x}=typeof ${v}==='number'&&${t}[${v}]!==undefined?${v}:intSlow(${v},${en},${t},0,0,E,${M},${o},${pexpr(p)});`);
+  } else {
+    const [lo, hi] = f.valid ? [f.valid.min, f.valid.max] : [-Infinity, Infinity];
+    const int = lo >= -2147483648 && hi <= 2147483647 ? `(${v}|0)===${v}` : `Number.isInteger(${v})`;
+    b.push(`const ${x}=typeof ${v}==='number'&&${int}&&${v}>=${lo}&&${v}<=${hi}?${v}:intSlow(${v},null,null,${lo},${hi},E,${M},${o},${pexpr(p)});`);
+  }
+  if (f.type === 'bits') {
+    const m = ((1 << f.bits.width) - 1) << f.bits.lo;
+    b.push(`out[${o}]=(out[${o}]&${~m & 0xff})|((${x}<<${f.bits.lo})&${m});`);
+    return;
+  }
+  // little-endian by byte (a Uint8Array store keeps the low 8 bits, as the tables' DataView stores did)
+  const bytes = f.element_size;
+  for (let k = 0; k < bytes; ++k) b.push(`out[${o}${k ? `+${k}` : ''}]=${k ? `${x}>>${8 * k}` : x};`);
+}
+function encRecord(b, fields, r, base, path, root) {
+  const names = fields.map((f) => f.name).join(', ');
+  // the field names first: what an object given by hand holds (an if chain: cheaper than a switch or a Set)
+  const keys = new Set([...fields.map((f) => f.name),
+    ...fields.flatMap((f) => [`${f.name}_bits`, `${f.name}_text`, ...(f.physical ? [f.physical] : [])])]);
+  const unknown = `unknownField(${b.info},${root ? "''" : pexpr(path)},k,${J(names)});`;
+  b.push(`for(const k in ${r})${keys.size ? `if(${[...keys].map((k) => `k!==${J(k)}`).join('&&')})` : ''}${unknown}`);
+  for (const f of fields) {
+    const o = base === '0' ? `${f.offset}` : `${base}+${f.offset}`;
+    const p = root ? { lit: f.name } : pcat(path, `.${f.name}`);
+    const v = b.tmp('v');
+    b.push(`const ${v}=${r}[${J(f.name)}];`);
+    if (f.optional) b.push(`if(${v}!==undefined&&${v}!==null){`);
+    if (f.array) {
+      const a = b.tmp('a');
+      b.push(`const ${a}=${v}??[];if(!Array.isArray(${a})&&!(${a} instanceof Uint8Array))notArray(${pexpr(p)},${f.count});`);
+      b.push(`if(${v}!==undefined&&${a}.length!==${f.count})badCount(${b.info},${pexpr(p)},${a}.length,${f.count},${root});`);
+      if (f.count <= 8) {
+        for (let i = 0; i < f.count; ++i) {
+          const e = b.tmp('e');
+          b.push(`const ${e}=${a}[${i}];`);
+          encElement(b, f, e, o === `${f.offset}` ? `${f.offset + i * f.element_size}` : `${o}+${i * f.element_size}`, pcat(p, `[${i}]`));
+        }
+      } else {
+        const i = b.tmp('i');
+        const e = b.tmp('e');
+        b.push(`for(let ${i}=0;${i}<${f.count};++${i}){const ${e}=${a}[${i}];`);
+        encElement(b, f, e, `${o}+${i}*${f.element_size}`, pidx(p, i));
+        b.push('}');
+      }
+    } else {
+      encElement(b, f, v, o, p);
+    }
+    if (f.optional) b.push('}');
+  }
+}
+// A message's encoder: its length (optional blocks given, the tail), fixed bytes, fields.
+function encoder(m, id, info) {
+  const b = new EncBody(info);
+  const variable = m.fields.some((f) => f.optional || f.type === 'tail');
+  b.push(`${variable ? 'let' : 'const'} size=${m.min_size};`);
+  let tail = null;
+  for (const f of m.fields) {
+    if (f.optional) b.push(`{const v=F[${J(f.name)}];if(v!==undefined&&v!==null)size=Math.max(size,${f.offset + f.size});}`);
+    if (f.type === 'tail') {
+      tail = f;
+      b.push(`const T=tailBytes(F[${J(f.name)}]);if(T.length>${f.capacity})throw messageError(E,${info},'too_long',${f.offset + f.capacity});size=Math.max(size,${f.offset}+T.length);`);
+    }
+  }
+  b.push('const out=new Uint8Array(size);');
+  const dvAt = b.lines.length;
+  for (const x of m.fixed) {
+    if (!variable && x.offset >= m.min_size) continue;
+    b.push(variable && x.offset >= m.min_size ? `if(size>${x.offset})out[${x.offset}]=${x.value};` : `out[${x.offset}]=${x.value};`);
+  }
+  encRecord(b, m.fields, 'F', '0', { lit: '' }, true);
+  if (tail) b.push(`out.set(T,${tail.offset});`);
+  b.push('return out;');
+  if (b.float) b.lines.splice(dvAt, 0, 'const dv=new DataView(out.buffer);');
+  return `function ${id}(F){\n${b.lines.join('\n')}\n}`;
 }
 
 // lib/schema.js: the schema itself, frozen.
@@ -167,6 +277,8 @@ export function schemaModule(schema) {
 export function generate(schema, p) {
   enumTables = [];
   flagValues = [];
+  encEnums = [];
+  encValues = [];
   const out = [];
   const keyed = p.key_offsets;
   const decs = p.messages.map((m, i) => decoder(m, `d${i}`, p.frame ? [] : keyed));
@@ -182,7 +294,7 @@ export function generate(schema, p) {
   }
   const keyless = p.messages.findIndex((m) => m.key.length === 0);
   out.push(`// Generated by js/gen/generate.js from js/schema.json (schema_version ${schema.schema_version}): ${p.name}, ${p.summary}. Do not edit.`);
-  out.push(`import { RobowireError, Fail, fail, hex, tidy, f32, text, bytesOf, messageError, keyError, plainError, encodeMessage, FrameScanner, FrameReassembler, fragmentPayload } from './runtime.js';`);
+  out.push(`import { RobowireError, Fail, fail, hex, tidy, f32, text, bytesOf, messageError, keyError, plainError, encodeWith, intSlow, notObject, notArray, badCount, unknownField, bad, putText, tailBytes, FrameScanner, FrameReassembler, fragmentPayload } from './runtime.js';`);
   out.push(`const E=${J(errors)};`);
   out.push(`function flagName(values,v){return values[v]??String(v);}`);
   out.push(...infos);
@@ -194,7 +306,8 @@ export function generate(schema, p) {
   out.push(`const KEYS=${J(byDir)};`);
   out.push(`const LEN=${J(p.messages.map((m) => [m.min_size, m.max_input]))};`);
   out.push(`const KO=${J(keyed)};const LAST=${keyed[keyed.length - 1]};`);
-  out.push(`function keyAt(b){return KO.map((o)=>b[o]).join(',');}`);
+  // one key byte: the byte itself indexes KEYS (no string built per frame)
+  out.push(keyed.length === 1 ? `function keyAt(b){return b[${keyed[0]}];}` : `function keyAt(b){return KO.map((o)=>b[o]).join(',');}`);
   out.push(`function result(i,fields){return{type:'message',protocol:${J(p.name)},message:NAMES[i],fields};}`);
   out.push(`function run(i,b,dv,n){try{return result(i,D[i](b,dv,n));}catch(e){if(e instanceof Fail)throw messageError(E,MI[i],e.code,e.offset);throw e;}}`);
   if (p.frame) {
@@ -232,11 +345,14 @@ return decodeAs(${J(directions[0])},b,dv,n);}`);
   }
   out.push(`// decode(bytes, {direction}) -> {type:'message', protocol, message, fields}; RobowireError otherwise.
 export function decode(bytes,{direction}={}){const b=bytesOf(bytes);return decodeAny(b,new DataView(b.buffer,b.byteOffset,b.length),b.length,direction);}`);
-  const enc = p.messages.map((m) => ({ name: m.name, direction: m.direction, fixed: m.fixed.map((x) => [x.offset, x.value]),
-    min_size: m.min_size, max_size: m.max_size, fields: encodeFields(m.fields) }));
-  out.push(`const ENC=${J(enc)};`);
+  out.push(...p.messages.map((m, i) => encoder(m, `e${i}`, `M${i}`)));
+  out.push(encEnums.map((t, i) => `const EE${i}=${J(t)};`).join('\n'));
+  out.push(encValues.map((t, i) => `const EV${i}=${J(t)};`).join('\n'));
+  out.push(`const ENCODERS=[${p.messages.map((_, i) => `e${i}`).join(',')}];const INDEX=new Map(NAMES.map((n,i)=>[n,i]));`);
   out.push(`// encode(message, fields) or encode(decoded) -> Uint8Array; RobowireError for a value it cannot hold.
-export function encode(message,fields){return encodeMessage(E,${J(p.name)},ENC,MI,message,fields);}`);
+export function encode(message,fields){
+if(typeof message==='string'&&typeof fields==='object'&&fields!==null)switch(message){${p.messages.map((m, i) => `case ${J(m.name)}:return e${i}(fields);`).join('')}}
+return encodeWith(${J(p.name)},INDEX,ENCODERS,message,fields);}`);
   if (p.stream === 'scanner') {
     out.push(`// new Scanner(): .push(bytes) -> records of the frames found (as \`robowire scan ${p.name} --json\`); .counters.
 export class Scanner extends FrameScanner{constructor(){super(${p.frame.min_size},${J(p.frame.fixed.map((x) => [x.offset, x.value]))},decode,${J(p.name)});}}`);

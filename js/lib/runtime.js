@@ -83,85 +83,67 @@ export function plainError(errors, code, offset) {
   return new RobowireError(`${errors[code]} at byte ${offset}`, { code, offset });
 }
 
-// ---- encode, from a message's table (generated ENC entries)
+// ---- encode: what the generated encoders (e0, e1, ... in each protocol's
+// module) call off their fast path: the errors, and values that are not
+// plain numbers.
 const utf8out = new TextEncoder();
-const setters = { u16le: 'setUint16', i16le: 'setInt16', u32le: 'setUint32', i32le: 'setInt32', f32le: 'setFloat32' };
-// The keys a record's object may hold: its fields and what decode adds to them.
-const knownKeys = new WeakMap();
-function keysOf(fields) {
-  let k = knownKeys.get(fields);
-  if (k === undefined) {
-    k = new Set(fields.flatMap((f) => [f.name, `${f.name}_bits`, `${f.name}_text`, ...(f.physical ? [f.physical] : [])]));
-    knownKeys.set(fields, k);
-  }
-  return k;
+// A value at byte `o` that the tables reject; `field`: the value's path.
+export function bad(errors, m, code, o, path) {
+  throw Object.assign(messageError(errors, m, code, o), { field: path });
 }
-function bad(ctx, code, o, path) {
-  throw Object.assign(messageError(ctx.E, ctx.info, code, o), { field: path });
+export function notInteger(v, path) {
+  throw new TypeError(`encode: ${path}: an integer expected, not ${String(v)}`);
 }
-function put(ctx, f, v, o, path) {
-  const { out, dv } = ctx;
-  if (f.type === 'record') return putRecord(ctx, f.record, v ?? {}, o, path);
-  if (f.type === 'text') {
-    if (v === undefined || v === null) v = '';
-    if (typeof v !== 'string') throw new TypeError(`encode: ${path}: text expected`);
-    const t = utf8out.encode(v);
-    if (t.length > f.capacity || t.includes(0)) bad(ctx, 'value_out_of_range', o, path);
-    out.set(t, o);
-    return;
-  }
-  if (f.type === 'tail') return;  // written by encodeMessage (it sets the length)
-  if (f.type === 'f32le') {
-    dv.setFloat32(o, v === undefined || v === null ? NaN : Number(v), true);
-    if (v === undefined) dv.setFloat32(o, 0, true);
-    return;
-  }
+// An integer field's raw value from what is not a number: not given, the
+// first enum value or 0; a boolean, 1 or 0; an enum name, its value (NaN
+// for a name the enum lacks); else Number(v), which must be an integer.
+export function rawOf(v, names, path) {
   let raw;
-  if (v === undefined) raw = f.enum ? Object.values(f.enum)[0] ?? 0 : 0;
+  if (v === undefined) raw = names ? Object.values(names)[0] ?? 0 : 0;
   else if (typeof v === 'boolean') raw = v ? 1 : 0;
-  else if (typeof v === 'string' && f.enum) {
-    raw = f.enum[v];
-    if (raw === undefined) bad(ctx, 'invalid_enum', o, path);
+  else if (typeof v === 'string' && names) {
+    raw = names[v];
+    if (raw === undefined) return NaN;
   } else raw = Number(v);
-  if (!Number.isInteger(raw)) throw new TypeError(`encode: ${path}: an integer expected, not ${String(v)}`);
-  if (f.enum) {
-    if (!Object.values(f.enum).includes(raw)) bad(ctx, 'invalid_enum', o, path);
-  } else if (f.valid && (raw < f.valid.min || raw > f.valid.max)) {
-    bad(ctx, 'value_out_of_range', o, path);
-  }
-  if (f.type === 'bits') {
-    const m = ((1 << f.bits.width) - 1) << f.bits.lo;
-    out[o] = (out[o] & ~m) | ((raw << f.bits.lo) & m);
-  } else if (f.element_size === 1) {
-    out[o] = raw & 0xff;
-  } else {
-    dv[setters[f.type]](o, raw, true);
-  }
+  if (!Number.isInteger(raw)) notInteger(v, path);
+  return raw;
 }
-function putRecord(ctx, fields, obj, base, path) {
-  if (obj === null || typeof obj !== 'object' || Array.isArray(obj)) throw new TypeError(`encode: ${path}: an object expected`);
-  const known = keysOf(fields);
-  for (const k in obj)
-    if (!known.has(k))
-      throw new RobowireError(`unknown field ${path ? `${path}.` : ''}${k} (fields: ${fields.map((f) => f.name).join(', ')})`,
-        { messageName: ctx.info.name });
-  for (const f of fields) {
-    const v = obj[f.name];
-    const o = base + f.offset;
-    const p = path ? `${path}.${f.name}` : f.name;
-    if (f.optional && (v === undefined || v === null)) continue;
-    if (f.array) {
-      const a = v ?? [];
-      if (!Array.isArray(a) && !(a instanceof Uint8Array)) throw new TypeError(`encode: ${p}: an array of ${f.count} expected`);
-      if (v !== undefined && a.length !== f.count)
-        throw new RobowireError(`${p}: ${a.length} values given, ${f.count} expected${path ? '' : ` (${p}=v1,...,v${f.count})`}`, { messageName: ctx.info.name, field: p });
-      for (let i = 0; i < f.count; ++i) put(ctx, f, a[i], o + i * f.element_size, `${p}[${i}]`);
-    } else {
-      put(ctx, f, v, o, p);
-    }
-  }
+// An integer field's value that is not a valid number as it is: its raw
+// value (rawOf), checked against the enum's values (numbers: value -> 1)
+// or min..max; throws for a value the field cannot hold.
+export function intSlow(v, names, numbers, min, max, errors, m, o, path) {
+  let raw;
+  if (typeof v !== 'number') raw = rawOf(v, names, path);
+  else if (!Number.isInteger(v)) notInteger(v, path);
+  else raw = v;
+  if (numbers ? numbers[raw] === undefined : raw < min || raw > max)
+    bad(errors, m, numbers ? 'invalid_enum' : 'value_out_of_range', o, path);
+  return raw;
 }
-function tailBytes(v) {
+export function notObject(path) {
+  throw new TypeError(`encode: ${path}: an object expected`);
+}
+export function notArray(path, count) {
+  throw new TypeError(`encode: ${path}: an array of ${count} expected`);
+}
+export function badCount(m, path, length, count, top) {
+  throw new RobowireError(`${path}: ${length} values given, ${count} expected${top ? ` (${path}=v1,...,v${count})` : ''}`,
+    { messageName: m.name, field: path });
+}
+export function unknownField(m, path, key, names) {
+  throw new RobowireError(`unknown field ${path ? `${path}.` : ''}${key} (fields: ${names})`, { messageName: m.name });
+}
+// Writes text field v (a string; not given: empty) at o; true when it does not fit.
+export function putText(out, v, o, capacity, path) {
+  if (v === undefined || v === null) v = '';
+  if (typeof v !== 'string') throw new TypeError(`encode: ${path}: text expected`);
+  const t = utf8out.encode(v);
+  if (t.length > capacity || t.includes(0)) return true;
+  out.set(t, o);
+  return false;
+}
+// A byte tail's bytes: a Uint8Array, an array or hex text.
+export function tailBytes(v) {
   if (v === undefined || v === null) return new Uint8Array(0);
   if (typeof v === 'string') {
     const s = v.replace(/\s+/g, '');
@@ -170,7 +152,9 @@ function tailBytes(v) {
   }
   return Uint8Array.from(v);
 }
-export function encodeMessage(E, protocol, table, infos, message, fields = {}) {
+// encode(message, fields) or encode(decoded): the message's encoder (index:
+// name -> its number in encoders).
+export function encodeWith(protocol, index, encoders, message, fields = {}) {
   if (message !== null && typeof message === 'object') {  // what decode returns
     if (message.protocol !== undefined && message.protocol !== protocol)
       throw new RobowireError(`encode: a ${message.protocol} message, not ${protocol}`);
@@ -179,27 +163,9 @@ export function encodeMessage(E, protocol, table, infos, message, fields = {}) {
   }
   if (typeof message !== 'string') throw new TypeError('encode: message must be a name (string)');
   if (fields === null || typeof fields !== 'object') throw new TypeError('encode: fields must be an object');
-  const i = table.findIndex((m) => m.name === message);
-  if (i < 0) throw new RobowireError(`unknown message ${message} (robowire list ${protocol})`);
-  const m = table[i];
-  let size = m.min_size;
-  let tail = null;
-  for (const f of m.fields) {
-    const v = fields[f.name];
-    if (f.optional && v !== undefined && v !== null) size = Math.max(size, f.offset + f.size);
-    if (f.type === 'tail') {
-      tail = [f, tailBytes(v)];
-      if (tail[1].length > f.capacity)
-        throw messageError(E, infos[i], 'too_long', f.offset + f.capacity);
-      size = Math.max(size, f.offset + tail[1].length);
-    }
-  }
-  const out = new Uint8Array(size);
-  const ctx = { out, dv: new DataView(out.buffer), E, info: infos[i] };
-  for (const [o, v] of m.fixed) if (o < size) out[o] = v;
-  putRecord(ctx, m.fields, fields, 0, '');
-  if (tail) out.set(tail[1], tail[0].offset);
-  return out;
+  const i = index.get(message);
+  if (i === undefined) throw new RobowireError(`unknown message ${message} (robowire list ${protocol})`);
+  return encoders[i](fields);
 }
 
 // ---- serial streams: frames found in a byte stream (OSP's scanner)
