@@ -20,6 +20,23 @@ test('the package size and its gzipped size (within 3 %)', () => {
   near(files.reduce((n, f) => n + gzipSync(f, { level: 9 }).length, 0), Number(m[2]), 'gzipped');
 });
 
+test('the bundled, minified size and its gzipped size (within 3 %)', async (t) => {
+  const m = doc.match(/Bundled and minified as an app's bundler does it \(esbuild,[^)]*\): (\d+) KB, (\d+) KB gzipped/);
+  assert.ok(m, 'bundle size sentence not found');
+  let esbuild;
+  try {
+    esbuild = await import('esbuild');
+  } catch {
+    t.skip('esbuild not installed (npm ci)');
+    return;
+  }
+  const r = await esbuild.build({ entryPoints: [new URL('../index.js', import.meta.url).pathname], bundle: true, minify: true, format: 'esm', write: false });
+  const out = r.outputFiles[0].contents;
+  const near = (actual, kb, what) => assert.ok(Math.abs(actual / 1000 - kb) <= kb * 0.03, `${what}: ${actual} bytes, docs say ${kb} KB`);
+  near(out.length, Number(m[1]), 'bundle');
+  near(gzipSync(out, { level: 9 }).length, Number(m[2]), 'bundle gzipped');
+});
+
 test('the number of golden vectors', () => {
   assert.match(doc, new RegExp(`the ${cases.length} BuWizz3 golden vectors`));
 });
