@@ -27,6 +27,7 @@ for (const [name, r] of Object.entries(routes)) {
   assert.deepEqual(r.encode(motor), expected.encode(motor), name);
   assert.throws(() => r.decode(frame.subarray(0, 60)), (e) => e.code === 'bad_length', name);
   assert.throws(() => r.encode({ power: [0, 0, 128, 0, 0, 0] }), (e) => e.code === 'value_out_of_range' && e.offset === 3, name);
+  assert.throws(() => r.encode({ powr: [0, 0, 0, 0, 0, 0] }), (e) => /powr|unknown_field/.test(`${e.message} ${e.code}`), name);
 }
 
 const roundsArg = process.argv.indexOf('--rounds');

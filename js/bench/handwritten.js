@@ -71,7 +71,15 @@ export function decodeStatus(b) {
   };
 }
 
-export function encodeSetMotorData({ power = [0, 0, 0, 0, 0, 0], brake_flags = 0, lut_disable_flags = 0 }) {
+// Like the package's encode: a name that is no field (nor a key its decode adds) is an error, not ignored.
+export function encodeSetMotorData(f) {
+  for (const k in f) {
+    if (k !== 'power' && k !== 'brake_flags' && k !== 'lut_disable_flags' && k !== 'brake_flags_bits' && k !== 'lut_disable_flags_bits'
+      && k !== 'power_bits' && k !== 'power_text' && k !== 'power_physical' && k !== 'brake_flags_text' && k !== 'lut_disable_flags_text') {
+      throw new HandError('unknown_field', 0);  // the package: a usage error naming the field
+    }
+  }
+  const { power = [0, 0, 0, 0, 0, 0], brake_flags = 0, lut_disable_flags = 0 } = f;
   if (power.length !== 6) throw new HandError('bad_length', 1);
   const out = new Uint8Array(9);
   out[0] = 0x30;
