@@ -783,7 +783,7 @@ export declare const navbot: Codec<Navbot.Message, Navbot.Inputs> & {
   Reassembler: new () => { push(frame: Bytes): NavbotRecord[] };
   /** The 20-byte frames of one message. */
   fragment<N extends keyof Navbot.Inputs & string>(message: N, fields?: Navbot.Inputs[N]): Uint8Array[];
-  fragment(bytes: Bytes): Uint8Array[];
+  fragment(payload: Bytes | string, options?: { command?: number }): Uint8Array[];
 };
 
 /** An OSP scanner's counters (as `robowire scan osp --json`'s counters line). */
