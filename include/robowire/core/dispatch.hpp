@@ -57,6 +57,12 @@ ROBOWIRE_ALWAYS_INLINE constexpr auto& make_alternative(result<Variant>& r) noex
     if constexpr (ROBOWIRE_OPTIMIZE_SIZE) return emplace_alternative<I>(unchecked_value(r));
     else return *std::get_if<I>(&detail::build_value(r, std::in_place_index<I>));
 }
+// As make_alternative (not under ROBOWIRE_OPTIMIZE_SIZE), for a codec that has
+// stored r's flag (as true) already, with other bytes: at run time the flag is left as it is.
+template <std::size_t I, class Variant>
+ROBOWIRE_ALWAYS_INLINE constexpr auto& make_alternative_keep_flag(result<Variant>& r) noexcept {
+    return *std::get_if<I>(&detail::build_value_keep_flag(r, std::in_place_index<I>));
+}
 }  // namespace codec::inline ROBOWIRE_MODE_NAMESPACE
 
 namespace detail {

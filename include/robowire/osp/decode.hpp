@@ -139,7 +139,7 @@ constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
 template <std::size_t I, bool FlagSet = false>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_message(decode_result& d, std::span<const std::uint8_t> in) noexcept {
     if constexpr (FlagSet) {
-        auto& m = *std::get_if<I>(&detail::build_value_keep_flag(d, std::in_place_index<I>));
+        auto& m = codec::make_alternative_keep_flag<I>(d);
         if (const error e = codec::decode_fields(m, in); e.code != errc::ok) d = e;
     } else if (const error e = codec::decode_fields(codec::make_alternative<I>(d), in); e.code != errc::ok) {
         d = e;
