@@ -58,6 +58,15 @@ inline decimal shortest_decimal(double v) {
     if (neg_exp) x.exp = -x.exp;
     return x;
 }
+// u's decimal digits into b, lowest first (at most 20); returns how many.
+inline int reversed_digits(std::uint64_t u, char* b) {
+    int n = 0;
+    do {
+        b[n++] = static_cast<char>('0' + u % 10);
+        u /= 10;
+    } while (u);
+    return n;
+}
 // The digits of v when a decimal of at most 15 significant digits with up to
 // 7 decimals reads back as v (most physical values: raw x 0.015): then it is
 // what %.15g writes, found with a few multiplications instead of Ryu.
@@ -70,13 +79,9 @@ inline bool short_decimal(double v, decimal& x) {
         if (r / pow10[k] != v) continue;
         auto m = static_cast<std::int64_t>(r);
         x.neg = m < 0 || (m == 0 && std::signbit(v));
-        std::uint64_t u = m < 0 ? 0 - static_cast<std::uint64_t>(m) : static_cast<std::uint64_t>(m);
+        const std::uint64_t u = m < 0 ? 0 - static_cast<std::uint64_t>(m) : static_cast<std::uint64_t>(m);
         char b[24];
-        int n = 0;
-        do {
-            b[n++] = static_cast<char>('0' + u % 10);
-            u /= 10;
-        } while (u);
+        const int n = reversed_digits(u, b);
         x.n = n;
         for (int i = 0; i < n; ++i) x.d[i] = b[n - 1 - i];
         x.exp = n - 1 - k;
@@ -196,14 +201,10 @@ inline bool physical_decimal(std::int64_t raw, double scale, double offset, deci
         !scale_decimal(scale, m, k))
         return false;
     const std::int64_t p = raw * m;
-    std::uint64_t u = p < 0 ? 0 - static_cast<std::uint64_t>(p) : static_cast<std::uint64_t>(p);
+    const std::uint64_t u = p < 0 ? 0 - static_cast<std::uint64_t>(p) : static_cast<std::uint64_t>(p);
     if (u >= 1'000'000'000'000'000u) return false;
     char b[24];
-    int n = 0;
-    do {
-        b[n++] = static_cast<char>('0' + u % 10);
-        u /= 10;
-    } while (u);
+    const int n = reversed_digits(u, b);
     x.neg = p < 0;
     x.exp = n - 1 - k;
     int lo = 0;
