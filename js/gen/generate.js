@@ -195,8 +195,11 @@ function encElement(b, f, v, o, p) {
     b.push(`const ${x}=typeof ${v}==='number'&&${t}[${v}]!==undefined?${v}:intSlow(${v},${en},${t},0,0,E,${M},${o},${pexpr(p)});`);
   } else {
     const [lo, hi] = f.valid ? [f.valid.min, f.valid.max] : [-Infinity, Infinity];
-    const int = lo >= -2147483648 && hi <= 2147483647 ? `(${v}|0)===${v}` : `Number.isInteger(${v})`;
-    b.push(`const ${x}=typeof ${v}==='number'&&${int}&&${v}>=${lo}&&${v}<=${hi}?${v}:intSlow(${v},null,null,${lo},${hi},E,${M},${o},${pexpr(p)});`);
+    // int32 bounds: an int32 v is in lo..hi when (v-lo)>>>0 <= hi-lo (one compare)
+    const test = lo >= -2147483648 && hi <= 2147483647
+      ? `(${v}|0)===${v}&&${lo === 0 ? `${v}>>>0` : lo < 0 ? `(${v}+${-lo})>>>0` : `(${v}-${lo})>>>0`}<=${hi - lo}`
+      : `Number.isInteger(${v})&&${v}>=${lo}&&${v}<=${hi}`;
+    b.push(`const ${x}=typeof ${v}==='number'&&${test}?${v}:intSlow(${v},null,null,${lo},${hi},E,${M},${o},${pexpr(p)});`);
   }
   if (f.type === 'bits') {
     const m = ((1 << f.bits.width) - 1) << f.bits.lo;
