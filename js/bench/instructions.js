@@ -8,7 +8,7 @@
 // fails (exit 1) when the package takes more than LIMIT times the
 // hand-written code's instructions.
 //   node bench/instructions.js [--check [LIMIT]]   (LIMIT: default 1.05)
-//   needs valgrind; about 2 minutes
+//   needs valgrind; about 6 minutes
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 
