@@ -56,6 +56,32 @@ named = [c for c in robowire_cases if f"FAIL {c}:" in out]
 expect(f"a baseline 5 % cheaper fails, naming every case ({len(named)}/{len(robowire_cases)})",
        code == 1 and len(named) == len(robowire_cases))
 
+def gate_current(changed):  # the committed baseline against a changed copy of the current figures
+    global current
+    saved = current
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+        json.dump(changed, f)
+    current = f.name
+    try:
+        return gate(base)
+    finally:
+        pathlib.Path(f.name).unlink()
+        current = saved
+
+
+figures = json.loads(pathlib.Path(current).read_text())
+for case, variant, value, goal in (
+        ("osp.scan_noise/4096", "robowire", lambda c: c["osp.scan_noise/4096"]["memchr"]["instructions"] + 1,
+         "more than memchr's scan"),
+        ("osp.scan_ff_aa/4096", "robowire", lambda c: 8 * 65536 + 1, "more than 8"),
+        ("osp.scan_clean/64", "robowire", lambda c: c["osp.scan_clean/1"]["robowire"]["instructions"] + 1,
+         "more than one byte per call")):
+    changed = copy.deepcopy(figures)
+    changed["cases"][case][variant]["instructions"] = value(changed["cases"])
+    code, out = gate_current(changed)
+    expect(f"a missed scanner goal fails: {case} {goal}",
+           code == 1 and f"FAIL scanner goal: {case}" in out and goal in out)
+
 code, out = gate(cheaper(base, 1 / 1.005))
 expect("a baseline 0.5 % cheaper passes at the default 1 % threshold", code == 0)
 code, out = gate(cheaper(base, 1 / 1.005), "--threshold", "0.25")

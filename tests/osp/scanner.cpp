@@ -187,7 +187,7 @@ TEST_CASE("scanner: matches the reference on arbitrary streams, any chunking", "
         const auto one = scan_in_chunks(s, 1);
         INFO("seed " << seed);
         REQUIRE(one.frames == want);
-        for (std::size_t chunk : {2u, 5u, 10u, 13u, 64u, 4096u}) {
+        for (std::size_t chunk : {2u, 5u, 10u, 13u, 63u, 64u, 65u, 100u, 127u, 128u, 4096u}) {
             const auto got = scan_in_chunks(s, chunk);
             REQUIRE(got.frames == want);
             CHECK(got.skipped == one.skipped);

@@ -131,6 +131,23 @@
 #error "ROBOWIRE_COPY_RUNS must be 0 or 1"
 #endif
 
+// ROBOWIRE_SSE2: 1 lets the OSP scanner look for start bytes 64 at a time
+// with SSE2 vector compares, inline, in chunks of 64 bytes or more (16 at a
+// time in shorter ones); 0 calls memchr. Default 1 where g++ or clang++
+// targets SSE2 (x86-64 always), else 0. Same results either way.
+#ifndef ROBOWIRE_SSE2
+#if defined(__SSE2__) && (defined(__GNUC__) || defined(__clang__))
+#define ROBOWIRE_SSE2 1
+#else
+#define ROBOWIRE_SSE2 0
+#endif
+#endif
+#if ROBOWIRE_SSE2 != 0 && ROBOWIRE_SSE2 != 1
+#error "ROBOWIRE_SSE2 must be 0 or 1"
+#elif ROBOWIRE_SSE2 && !(defined(__SSE2__) && (defined(__GNUC__) || defined(__clang__)))
+#error "ROBOWIRE_SSE2 is 1, but the compiler is not g++ or clang++ targeting SSE2"
+#endif
+
 // The inline namespace of the code that depends on the two macros above
 // (robowire::detail::size1_loops1 at -Os): files built with different
 // settings link into one program, each with its own copy of that code,

@@ -88,15 +88,17 @@ public:
     constexpr void reset() noexcept { *this = scanner{}; }
 
 private:
-    // A chunk of 10 bytes or more: memchr finds the start byte, frames are
-    // checked and reported in place, and where start bytes are dense,
-    // scan_words takes 8 positions at a time.
+    // A chunk of 10 bytes or more: start_finder finds the start byte, frames
+    // are checked and reported in place, and where start bytes are dense,
+    // scan_words takes 8 positions at a time. Out of line: a caller's loop
+    // that feeds one byte at a time stays small.
     template <class OnFrame>
-    constexpr void feed_chunk(const std::uint8_t* p, std::size_t n, OnFrame& on_frame) {
+    ROBOWIRE_NOINLINE constexpr void feed_chunk(const std::uint8_t* p, std::size_t n, OnFrame& on_frame) {
         std::size_t i = len_ != 0 ? finish_held(p, on_frame) : 0;  // the next position to look at
         std::size_t mark = i;  // bytes from mark up to the next frame or held candidate are skipped
         const std::size_t last = n - (frame_size - 1);  // a window starting here or later ends past the chunk
-        std::size_t at = p[i] == start1 ? i : find_start(p, i, n);  // after a held frame, often the next one
+        start_finder starts{p, n};
+        std::size_t at = p[i] == start1 ? i : starts.next(i);  // after a held frame, often the next one
         while (at < last) {
             i = at;  // a start byte
             if (rest_of_frame(p + i)) {
@@ -105,18 +107,18 @@ private:
                     ++frames_;
                     on_frame(frame_bytes(p + i, frame_size));
                     i += frame_size;
-                } while (i < last && p[i] == start1 && rest_of_frame(p + i));
+                } while (i < last && frame_at(p + i));
                 mark = i;
                 // the last 9 positions are looked at one by one below
-                at = i < last ? (p[i] == start1 ? i : find_start(p, i, n)) : i;
+                at = i < last ? (p[i] == start1 ? i : starts.next(i)) : i;
                 continue;
             }
             ++false_starts_;
-            at = find_start(p, ++i, n);
+            at = starts.next(++i);
             if (words_ok && at - i < dense_gap && at < last) {  // start bytes close together: 8 positions a step
                 skipped_ += at - mark;
                 i = mark = scan_words(p, at, n, on_frame);
-                at = i < last && p[i] == start1 ? i : find_start(p, i, n);
+                at = i < last && p[i] == start1 ? i : starts.next(i);
             }
         }
         // The last 9 positions: their windows end past the chunk. Keep the
@@ -165,15 +167,97 @@ private:
     // Index of the next start byte in p[from..n), or n.
     static constexpr std::size_t find_start(const std::uint8_t* p, std::size_t from, std::size_t n) noexcept {
         if (!std::is_constant_evaluated()) {
+#if ROBOWIRE_SSE2
+            return find_start_sse2(p, from, n);
+#else
             const void* hit = std::memchr(p + from, start1, n - from);
             return hit ? static_cast<std::size_t>(static_cast<const std::uint8_t*>(hit) - p) : n;
+#endif
         }
         while (from < n && p[from] != start1) ++from;
         return from;
     }
-    static constexpr bool frame_at(const std::uint8_t* w) noexcept { return w[0] == start1 && rest_of_frame(w); }
-    static constexpr bool rest_of_frame(const std::uint8_t* w) noexcept {  // after a start byte
-        return w[1] == start2 && w[8] == end1 && w[9] == end2;
+    // The next start byte at or after `from` (no less than the last call's),
+    // in a chunk of n bytes: with SSE2 and n >= 64, from a mask of the start
+    // bytes in 64 bytes, kept between calls; else find_start.
+    struct start_finder {
+        const std::uint8_t* p;
+        std::size_t n;
+        std::size_t base = n;    // bits covers p[base, base + 64); none yet
+        std::uint64_t bits = 0;  // bit k: p[base + k] is a start byte
+        constexpr std::size_t next(std::size_t from) noexcept {
+#if ROBOWIRE_SSE2
+            if (!std::is_constant_evaluated() && n >= 64) {
+                if (from - base < 64) {  // in the block of the last call
+                    if (const std::uint64_t m = bits & (~std::uint64_t{0} << (from - base)); m != 0)
+                        return base + first_bit(m);
+                    from = base + 64;
+                }
+                for (; from <= n - 64; from += 64) {
+                    const v16 a = load16(p + from), b = load16(p + from + 16), c = load16(p + from + 32),
+                              d = load16(p + from + 48);
+                    if (start_lanes(max16(max16(a, b), max16(c, d))) != 0) {
+                        base = from;
+                        bits = lanes64(a, b, c, d);
+                        return from + first_bit(bits);
+                    }
+                }
+                if (from >= n) return n;
+                base = n - 64;  // the last 64 bytes, from on
+                bits = lanes64(load16(p + base), load16(p + base + 16), load16(p + base + 32), load16(p + base + 48)) &
+                       (~std::uint64_t{0} << (from - base));
+                return bits != 0 ? base + first_bit(bits) : n;
+            }
+#endif
+            return find_start(p, from, n);
+        }
+    };
+#if ROBOWIRE_SSE2
+    // SSE2 (inline; no call per start byte as with memchr).
+    using v16 = unsigned char __attribute__((vector_size(16)));
+    static v16 load16(const std::uint8_t* p) noexcept {
+        v16 v;
+        std::memcpy(&v, p, sizeof v);
+        return v;
+    }
+    static unsigned start_lanes(v16 v) noexcept {  // bit k: lane k holds a start byte
+        using c16 = char __attribute__((vector_size(16)));
+        return static_cast<unsigned>(__builtin_ia32_pmovmskb128((c16)(v == start1)));
+    }
+    static v16 max16(v16 a, v16 b) noexcept { return a > b ? a : b; }    // start1 is 0xFF: FF where either is
+    static std::uint64_t lanes64(v16 a, v16 b, v16 c, v16 d) noexcept {  // bit k: lane k % 16 of the (k / 16)th
+        return start_lanes(a) | std::uint64_t{start_lanes(b)} << 16 | std::uint64_t{start_lanes(c)} << 32 |
+               std::uint64_t{start_lanes(d)} << 48;
+    }
+    static std::size_t first_bit(std::uint64_t m) noexcept { return static_cast<std::size_t>(std::countr_zero(m)); }
+    // 16 bytes a step, then one 16-byte load that ends at n.
+    static std::size_t find_start_sse2(const std::uint8_t* p, std::size_t from, std::size_t n) noexcept {
+        if (n - from < 16) {
+            while (from < n && p[from] != start1) ++from;
+            return from;
+        }
+        for (; n - from >= 16; from += 16)
+            if (const unsigned m = start_lanes(load16(p + from)); m != 0) return from + first_bit(m);
+        const unsigned m = start_lanes(load16(p + n - 16)) >> (16 - (n - from));  // the last n - from bytes
+        return m != 0 ? from + first_bit(m) : n;
+    }
+#endif
+    static constexpr bool frame_at(const std::uint8_t* w) noexcept {  // the four markers, two words at run time
+        if (!std::is_constant_evaluated() &&
+            (std::endian::native == std::endian::little || std::endian::native == std::endian::big)) {
+            return load2(w) == pair(start1, start2) && load2(w + 8) == pair(end1, end2);
+        }
+        return w[0] == start1 && w[1] == start2 && w[8] == end1 && w[9] == end2;
+    }
+    static constexpr bool rest_of_frame(const std::uint8_t* w) noexcept { return frame_at(w); }  // after a start byte
+    static std::uint16_t load2(const std::uint8_t* p) noexcept {
+        std::uint16_t v;
+        std::memcpy(&v, p, sizeof v);
+        return v;
+    }
+    static constexpr std::uint16_t pair(std::uint8_t first, std::uint8_t second) noexcept {  // as load2 reads them
+        return static_cast<std::uint16_t>(std::endian::native == std::endian::little ? first | second << 8
+                                                                                     : first << 8 | second);
     }
     // Eight positions at a time (where start bytes are dense, as in long
     // runs of FF or FF AA): from i, reports the frames and counts the other
