@@ -142,7 +142,9 @@
 #define ROBOWIRE_SSE2 0
 #endif
 #endif
-#if ROBOWIRE_SSE2 != 0 && ROBOWIRE_SSE2 != 1
+#if (ROBOWIRE_SSE2 + 0) == 0 && (0 - ROBOWIRE_SSE2 - 1) == 1  // defined as nothing
+#error "ROBOWIRE_SSE2 is defined empty: define it to 0 or 1"
+#elif ROBOWIRE_SSE2 != 0 && ROBOWIRE_SSE2 != 1
 #error "ROBOWIRE_SSE2 must be 0 or 1"
 #elif ROBOWIRE_SSE2 && !(defined(__SSE2__) && (defined(__GNUC__) || defined(__clang__)))
 #error "ROBOWIRE_SSE2 is 1, but the compiler is not g++ or clang++ targeting SSE2"
