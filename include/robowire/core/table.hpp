@@ -133,17 +133,36 @@ template <described M>
 inline constexpr auto table_v = detail::checked_table(table_of(std::type_identity<M>{}),
                                                       std::bool_constant<detail::members_match<M>()>{});
 
+namespace detail {
+// What coding a field depends on besides its offset and range: the member
+// type T and the wire type W (shared by fields of different messages).
+template <class T, class W>
+struct field_shape {
+    using member_type = T;
+    using wire_type = W;
+    using element_type = element_t<T>;
+    static_assert(wire_fits<W, element_type>(), "field: member type does not fit the wire type");
+    static constexpr wire_kind kind = W::kind;
+    static constexpr bool is_optional = optional_traits<T>::value;
+    static constexpr bool is_array = array_traits<value_t<T>>::value;
+    static constexpr bool is_enum = std::is_enum_v<element_type>;
+    static constexpr std::size_t count = array_traits<value_t<T>>::count;
+    static constexpr std::size_t element_size = detail::element_size<W, element_type>();
+    // Bytes the field occupies (a tail: its capacity).
+    static constexpr std::size_t size =
+        W::kind == wire_kind::tail ? bytes_traits<element_type>::size : count * element_size;
+};
+}  // namespace detail
+
 // One field: name, member, byte offset, wire type, valid raw range, unit.
 // The member may be a scalar, an enum, bool, text<N>, bytes<N> (tail), a
 // record struct, a std::array of those, or a std::optional of any of them
 // (an optional block: present when the input is long enough).
 template <class M, class T, class W>
-struct field {
+struct field : detail::field_shape<T, W> {
     using message_type = M;
-    using member_type = T;
-    using wire_type = W;
-    using element_type = detail::element_t<T>;
-    static_assert(detail::wire_fits<W, element_type>(), "field: member type does not fit the wire type");
+    using shape = detail::field_shape<T, W>;
+    using typename shape::element_type;
 
     std::string_view name;
     T M::*member;
@@ -156,16 +175,7 @@ struct field {
     constexpr field(std::string_view n, T M::*m, std::size_t off, W, robowire::unit u = {}) noexcept
         : name(n), member(m), offset(off), unit(u) {}
 
-    static constexpr wire_kind kind = W::kind;
-    static constexpr bool is_optional = detail::optional_traits<T>::value;
-    static constexpr bool is_array = detail::array_traits<detail::value_t<T>>::value;
-    static constexpr bool is_enum = std::is_enum_v<element_type>;
-    static constexpr std::size_t count = detail::array_traits<detail::value_t<T>>::count;
-    static constexpr std::size_t element_size = detail::element_size<W, element_type>();
-    // Bytes the field occupies (a tail: its capacity).
-    static constexpr std::size_t size =
-        W::kind == wire_kind::tail ? detail::bytes_traits<element_type>::size : count * element_size;
-    constexpr std::size_t end() const noexcept { return offset + size; }
+    constexpr std::size_t end() const noexcept { return offset + shape::size; }
 };
 
 // A message (or record) table.

@@ -70,30 +70,33 @@ constexpr bool encode_in_loop() noexcept {
 }
 }  // namespace ROBOWIRE_MODE_NAMESPACE
 
-// An array of at least 2 one-byte integers whose wire bytes are their memory
-// bytes: stored whole once checked (one copy at run time, not under
-// ROBOWIRE_OPTIMIZE_SIZE).
+// Field I of M's shape (member and wire type: table.hpp): the per-field
+// steps of the codec are instantiated per shape and range, not per field.
 template <class M, std::size_t I>
+using shape_t = typename field_t<M, I>::shape;
+
+// An array of at least 2 one-byte integers whose wire bytes are their memory
+// bytes (shape S): stored whole once checked (one copy at run time, not under
+// ROBOWIRE_OPTIMIZE_SIZE).
+template <class S>
 inline constexpr bool byte_array_v = [] {
-    using F = field_t<M, I>;
-    using E = typename F::element_type;
-    if constexpr (!F::is_array || F::count < 2 || std::is_enum_v<E> || std::is_same_v<E, bool> || sizeof(E) != 1 ||
+    using E = typename S::element_type;
+    if constexpr (!S::is_array || S::count < 2 || std::is_enum_v<E> || std::is_same_v<E, bool> || sizeof(E) != 1 ||
                   !std::is_integral_v<E>) {
         return false;
     } else {
-        return F::kind == wire_kind::u8 || F::kind == wire_kind::i8;
+        return S::kind == wire_kind::u8 || S::kind == wire_kind::i8;
     }
 }();
-// Such an array of at least 4 that needs no validation: also decoded whole,
-// and stored whole under ROBOWIRE_OPTIMIZE_SIZE too.
-template <class M, std::size_t I>
+// Such an array of at least 4 valid in [Min, Max] that needs no validation:
+// also decoded whole, and stored whole under ROBOWIRE_OPTIMIZE_SIZE too.
+template <class S, std::int64_t Min, std::int64_t Max>
 inline constexpr bool plain_byte_array_v = [] {
-    if constexpr (!byte_array_v<M, I> || field_t<M, I>::count < 4) {
+    if constexpr (!byte_array_v<S> || S::count < 4) {
         return false;
     } else {
-        using E = typename field_t<M, I>::element_type;
-        return field_v<M, I>.valid.min == std::numeric_limits<E>::min() &&
-               field_v<M, I>.valid.max == std::numeric_limits<E>::max();
+        using E = typename S::element_type;
+        return Min == std::numeric_limits<E>::min() && Max == std::numeric_limits<E>::max();
     }
 }();
 
@@ -198,32 +201,32 @@ ROBOWIRE_ALWAYS_INLINE void copy_run(unsigned char* to, const unsigned char* fro
 #endif
     std::memcpy(to, from, n);
 }
-template <class M>
-inline std::size_t offset_in(const M& m, const void* member) noexcept {
+inline std::size_t offset_in(const void* object, const void* member) noexcept {
     return static_cast<std::size_t>(static_cast<const unsigned char*>(member) -
-                                    reinterpret_cast<const unsigned char*>(&m));
+                                    static_cast<const unsigned char*>(object));
 }
 template <class E>
 ROBOWIRE_ALWAYS_INLINE std::size_t record_copy_size(const E& e) noexcept;
-// Field I of M copied as bytes: its size on the wire, or 0 if it is not a copy.
-template <class M, std::size_t I>
-ROBOWIRE_ALWAYS_INLINE std::size_t field_copy_size(const M& m) noexcept {
-    using F = field_t<M, I>;
-    using E = typename F::element_type;
-    constexpr auto member_ptr = field_v<M, I>.member;
-    if constexpr (F::is_optional) {
+// A member of shape S copied as bytes: its size on the wire, or 0 if it is not a copy.
+template <class S>
+ROBOWIRE_ALWAYS_INLINE std::size_t copy_size(const typename S::member_type& member) noexcept {
+    using E = typename S::element_type;
+    if constexpr (S::is_optional) {
+        (void)member;
         return 0;
-    } else if constexpr (F::kind == wire_kind::record) {
+    } else if constexpr (S::kind == wire_kind::record) {
         const auto& first = [&]() -> const E& {
-            if constexpr (F::is_array) return (m.*member_ptr)[0];
-            else return m.*member_ptr;
+            if constexpr (S::is_array) return member[0];
+            else return member;
         }();
         const std::size_t n = record_copy_size(first);
-        if constexpr (F::is_array) return n == sizeof(E) && F::element_size == sizeof(E) ? F::count * sizeof(E) : 0;
-        else return n == F::element_size ? n : 0;
-    } else if constexpr (same_bytes_v<typename F::wire_type, E>) {
-        return F::count * sizeof(E);
+        if constexpr (S::is_array) return n == sizeof(E) && S::element_size == sizeof(E) ? S::count * sizeof(E) : 0;
+        else return n == S::element_size ? n : 0;
+    } else if constexpr (same_bytes_v<typename S::wire_type, E>) {
+        (void)member;
+        return S::count * sizeof(E);
     } else {
+        (void)member;
         return 0;
     }
 }
@@ -237,8 +240,8 @@ ROBOWIRE_ALWAYS_INLINE std::size_t record_copy_size(const E& e) noexcept {
         return [&]<std::size_t... J>(std::index_sequence<J...>) {
             constexpr std::size_t covered = (field_t<E, J>::size + ... + 0);  // no byte between the fields
             std::size_t end = 0;
-            const bool all = ((field_copy_size<E, J>(e) == field_t<E, J>::size &&
-                               offset_in(e, &(e.*(field_v<E, J>.member))) == field_v<E, J>.offset &&
+            const bool all = ((copy_size<shape_t<E, J>>(e.*(field_v<E, J>.member)) == field_t<E, J>::size &&
+                               offset_in(&e, &(e.*(field_v<E, J>.member))) == field_v<E, J>.offset &&
                                ((end = end > field_v<E, J>.offset + field_t<E, J>::size
                                            ? end
                                            : field_v<E, J>.offset + field_t<E, J>::size),

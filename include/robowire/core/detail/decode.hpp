@@ -106,7 +106,10 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool text_padding_ok(std::span<const std::uint8
         }
     return true;
 }
-template <class M, std::size_t I, class E, class Err>
+// Each step below is instantiated per field shape S (member and wire type:
+// table.hpp) and valid range [Min, Max], not per field: fields of the same
+// kind, in any message, share them. `off` is the field's byte offset in `in`.
+template <class S, std::int64_t Min, std::int64_t Max, class E, class Err>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::uint8_t> in, std::size_t off,
                                                      Err& err) noexcept;
 
@@ -114,71 +117,65 @@ template <class M, class Err, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, std::size_t base, Err& err,
                                                     std::index_sequence<I...>) noexcept;
 
-template <class M, std::size_t I, class V, class Err, std::size_t... K>
+template <class S, std::int64_t Min, std::int64_t Max, class V, class Err, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_array(V& v, std::span<const std::uint8_t> in, std::size_t off, Err& err,
                                                    std::index_sequence<K...>) noexcept {
-    constexpr std::size_t es = field_t<M, I>::element_size;
-    if constexpr (decode_in_loop<field_t<M, I>>()) {
+    constexpr std::size_t es = S::element_size;
+    if constexpr (decode_in_loop<S>()) {
         if (!std::is_constant_evaluated()) {  // one copy of the element's code, in a loop
             ROBOWIRE_NO_UNROLL
             for (std::size_t k = 0; k < sizeof...(K); ++k)
-                if (!decode_element<M, I>(v[k], in, off + k * es, err)) return false;
+                if (!decode_element<S, Min, Max>(v[k], in, off + k * es, err)) return false;
             return true;
         }
     }
-    return (decode_element<M, I>(v[K], in, off + K * es, err) && ...);
+    return (decode_element<S, Min, Max>(v[K], in, off + K * es, err) && ...);
 }
 
-template <class M, std::size_t I, class V, class Err>
+template <class S, std::int64_t Min, std::int64_t Max, class V, class Err>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_value(V& v, std::span<const std::uint8_t> in, std::size_t off,
                                                    Err& err) noexcept {
-    using F = field_t<M, I>;
-    if constexpr (plain_byte_array_v<M, I>) {
+    if constexpr (plain_byte_array_v<S, Min, Max>) {
         if (!std::is_constant_evaluated()) {
-            std::memcpy(v.data(), in.data() + off, F::count);
+            std::memcpy(v.data(), in.data() + off, S::count);
             return true;
         }
     }
-    if constexpr (F::is_array) return decode_array<M, I>(v, in, off, err, std::make_index_sequence<F::count>{});
-    else return decode_element<M, I>(v, in, off, err);
+    if constexpr (S::is_array) return decode_array<S, Min, Max>(v, in, off, err, std::make_index_sequence<S::count>{});
+    else return decode_element<S, Min, Max>(v, in, off, err);
 }
 
-template <class M, std::size_t I, class Err>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::uint8_t> in, std::size_t base,
-                                                   Err& err) noexcept {
-    constexpr const auto& f = field_v<M, I>;
-    using F = field_t<M, I>;
-    const std::size_t off = base + f.offset;
-    constexpr auto member_ptr = f.member;
-    auto& member = m.*member_ptr;
-    if constexpr (F::is_optional) {
+template <class S, std::int64_t Min, std::int64_t Max, class Err>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(typename S::member_type& member, std::span<const std::uint8_t> in,
+                                                   std::size_t off, Err& err) noexcept {
+    if constexpr (S::is_optional) {
         if (in.size() <= off) {
             if constexpr (!fresh_v<Err>) member.reset();
             return true;
         }  // absent
         if constexpr (checks_v<Err>) {
-            if (in.size() < off + F::size) {
+            if (in.size() < off + S::size) {
                 err = codec::fail_at(errc::bad_length, off);
                 return false;
             }
         }
         if constexpr (ROBOWIRE_OPTIMIZE_SIZE || (!checks_v<Err> && ROBOWIRE_COPY_RUNS)) {  // decoded in place
-            return decode_value<M, I>(member.emplace(), in, off, err);
+            return decode_value<S, Min, Max>(member.emplace(), in, off, err);
         } else {
-            value_t<typename F::member_type> tmp{};  // stored whole once decoded: the stores merge
-            if (!decode_value<M, I>(tmp, in, off, err)) return false;
+            value_t<typename S::member_type> tmp{};  // stored whole once decoded: the stores merge
+            if (!decode_value<S, Min, Max>(tmp, in, off, err)) return false;
             member = tmp;
             return true;
         }
-    } else if constexpr (!F::is_array && scalar_wire_v<typename F::wire_type>) {
-        return decode_scalar<typename F::wire_type, f.valid.min, f.valid.max>(member, in, off, err);
+    } else if constexpr (!S::is_array && scalar_wire_v<typename S::wire_type>) {
+        return decode_scalar<typename S::wire_type, Min, Max>(member, in, off, err);
     } else {
-        return decode_value<M, I>(member, in, off, err);
+        return decode_value<S, Min, Max>(member, in, off, err);
     }
 }
 
 // ---- runs (ROBOWIRE_COPY_RUNS; access.hpp), the decode side: a run is
-// copied from the input into the object.
+// copied from the input into the object at `obj`.
 
 // (g++ cannot always see that a run past the end of a caller's buffer is
 // reached only by a longer input, and warns.)
@@ -187,50 +184,49 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(M& m, std::span<const std::ui
 #pragma GCC diagnostic ignored "-Warray-bounds"
 #pragma GCC diagnostic ignored "-Wstringop-overread"
 #endif
-template <class M>
-ROBOWIRE_ALWAYS_INLINE void flush(M& m, std::span<const std::uint8_t> in, const run& r) noexcept {
-    if (r.size != 0) copy_run(reinterpret_cast<unsigned char*>(&m) + r.mem, in.data() + r.wire, r.size);
+ROBOWIRE_ALWAYS_INLINE void flush(unsigned char* obj, std::span<const std::uint8_t> in, const run& r) noexcept {
+    if (r.size != 0) copy_run(obj + r.mem, in.data() + r.wire, r.size);
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
 #endif
-// Field I: joins the current run, starts one, or is decoded on its own.
-template <class M, std::size_t I>
-ROBOWIRE_ALWAYS_INLINE void copy_or_decode(M& m, std::span<const std::uint8_t> in, std::size_t base, run& r) noexcept {
-    const std::size_t size = field_copy_size<M, I>(m);
+// A field at byte `wire`: joins the current run, starts one, or is decoded on its own.
+template <class S, std::int64_t Min, std::int64_t Max>
+ROBOWIRE_ALWAYS_INLINE void copy_or_decode(unsigned char* obj, typename S::member_type& member,
+                                           std::span<const std::uint8_t> in, std::size_t wire, run& r) noexcept {
+    const std::size_t size = copy_size<S>(member);
     if (size != 0) {
-        const std::size_t wire = base + field_v<M, I>.offset, mem = offset_in(m, &(m.*(field_v<M, I>.member)));
+        const std::size_t mem = offset_in(obj, &member);
         if (r.size != 0 && r.wire + r.size == wire && r.mem + r.size == mem) {
             r.size += size;
         } else {
-            flush(m, in, r);
+            flush(obj, in, r);
             r = {wire, mem, size};
         }
     } else {
-        flush(m, in, r);
+        flush(obj, in, r);
         r = {};
         prechecked none{};
-        (void)decode_field<M, I>(m, in, base, none);
+        (void)decode_field<S, Min, Max>(member, in, wire, none);
     }
 }
 
-// Is field I of M decoded with no check (every value of its wire bytes valid:
-// full-range integers, floats, records of such fields)? Then a pass that
-// checks as it writes may copy it too.
-template <class M, std::size_t I>
+// Is a field of shape S valid in [Min, Max] decoded with no check (every
+// value of its wire bytes valid: full-range integers, floats, records of such
+// fields)? Then a pass that checks as it writes may copy it too.
+template <class S, std::int64_t Min, std::int64_t Max>
 constexpr bool unchecked_field() noexcept;
 template <class E, std::size_t... J>
 constexpr bool unchecked_record(std::index_sequence<J...>) noexcept {
-    return (unchecked_field<E, J>() && ...);
+    return (unchecked_field<shape_t<E, J>, field_v<E, J>.valid.min, field_v<E, J>.valid.max>() && ...);
 }
-template <class M, std::size_t I>
+template <class S, std::int64_t Min, std::int64_t Max>
 constexpr bool unchecked_field() noexcept {
-    using F = field_t<M, I>;
-    using E = typename F::element_type;
-    using W = typename F::wire_type;
-    if constexpr (F::is_optional) {
+    using E = typename S::element_type;
+    using W = typename S::wire_type;
+    if constexpr (S::is_optional) {
         return false;
-    } else if constexpr (F::kind == wire_kind::record) {
+    } else if constexpr (S::kind == wire_kind::record) {
         return unchecked_record<E>(std::make_index_sequence<field_count_v<E>>{});
     } else if constexpr (!scalar_wire_v<W> || std::is_enum_v<E> || !same_bytes_v<W, E>) {
         return false;
@@ -238,22 +234,22 @@ constexpr bool unchecked_field() noexcept {
         return true;
     } else {
         using raw = typename W::raw_type;
-        return field_v<M, I>.valid.min <= std::numeric_limits<raw>::min() &&
-               field_v<M, I>.valid.max >= std::numeric_limits<raw>::max();
+        return Min <= std::numeric_limits<raw>::min() && Max >= std::numeric_limits<raw>::max();
     }
 }
 // copy_or_decode for a pass that checks as it writes (one pass; its output is
 // discarded on an error, so a run left pending then is never copied).
-template <class M, std::size_t I, class Err>
-ROBOWIRE_ALWAYS_INLINE bool copy_or_check(M& m, std::span<const std::uint8_t> in, std::size_t base, run& r,
+template <class S, std::int64_t Min, std::int64_t Max, class Err>
+ROBOWIRE_ALWAYS_INLINE bool copy_or_check(unsigned char* obj, typename S::member_type& member,
+                                          std::span<const std::uint8_t> in, std::size_t wire, run& r,
                                           Err& err) noexcept {
-    if constexpr (unchecked_field<M, I>()) {
-        copy_or_decode<M, I>(m, in, base, r);
+    if constexpr (unchecked_field<S, Min, Max>()) {
+        copy_or_decode<S, Min, Max>(obj, member, in, wire, r);
         return true;
     } else {
-        flush(m, in, r);
+        flush(obj, in, r);
         r = {};
-        return decode_field<M, I>(m, in, base, err);
+        return decode_field<S, Min, Max>(member, in, wire, err);
     }
 }
 
@@ -263,28 +259,35 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::u
     (void)m, (void)in, (void)base, (void)err;  // messages without fields
     if constexpr (!checks_v<Err> && ROBOWIRE_COPY_RUNS) {
         if (!std::is_constant_evaluated()) {
+            const auto obj = reinterpret_cast<unsigned char*>(&m);
             run r{};
-            (copy_or_decode<M, I>(m, in, base, r), ...);
-            flush(m, in, r);
+            (copy_or_decode<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(
+                 obj, m.*(field_v<M, I>.member), in, base + field_v<M, I>.offset, r),
+             ...);
+            flush(obj, in, r);
             return true;
         }
     } else if constexpr (ROBOWIRE_OPTIMIZE_SIZE && ROBOWIRE_COPY_RUNS) {  // one pass: unchecked fields copied
         if (!std::is_constant_evaluated()) {
+            const auto obj = reinterpret_cast<unsigned char*>(&m);
             run r{};
-            if (!(copy_or_check<M, I>(m, in, base, r, err) && ...)) return false;
-            flush(m, in, r);
+            if (!(copy_or_check<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(
+                      obj, m.*(field_v<M, I>.member), in, base + field_v<M, I>.offset, r, err) &&
+                  ...))
+                return false;
+            flush(obj, in, r);
             return true;
         }
     }
-    return (decode_field<M, I>(m, in, base, err) && ...);
+    return (decode_field<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(
+                m.*(field_v<M, I>.member), in, base + field_v<M, I>.offset, err) &&
+            ...);
 }
 
-template <class M, std::size_t I, class E, class Err>
+template <class S, std::int64_t Min, std::int64_t Max, class E, class Err>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::uint8_t> in, std::size_t off,
                                                      Err& err) noexcept {
-    constexpr const auto& f = field_v<M, I>;
-    using F = field_t<M, I>;
-    using W = typename F::wire_type;
+    using W = typename S::wire_type;
     if constexpr (W::kind == wire_kind::record) {
         if constexpr (ROBOWIRE_OPTIMIZE_SIZE || (!checks_v<Err> && ROBOWIRE_COPY_RUNS)) {  // in place
             return decode_record<E>(v, in, off, err, std::make_index_sequence<field_count_v<E>>{});
@@ -311,12 +314,12 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
         v.assign(std::string_view(chars.data(), len));
         return true;
     } else if constexpr (W::kind == wire_kind::tail) {
-        const std::size_t end = in.size() < off + F::size ? in.size() : off + F::size;
+        const std::size_t end = in.size() < off + S::size ? in.size() : off + S::size;
         v.clear();
         (void)v.append(in.subspan(off, end > off ? end - off : 0));
         return true;
     } else {
-        return decode_scalar<W, f.valid.min, f.valid.max>(v, in, off, err);
+        return decode_scalar<W, Min, Max>(v, in, off, err);
     }
 }
 
@@ -325,12 +328,11 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
 template <class M, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(std::span<const std::uint8_t> in, std::size_t base, error& err,
                                                    std::index_sequence<I...>) noexcept;
-template <class M, std::size_t I>
+template <class S, std::int64_t Min, std::int64_t Max>
 ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(std::span<const std::uint8_t> in, std::size_t off,
                                                     error& err) noexcept {
-    using F = field_t<M, I>;
-    using E = typename F::element_type;
-    using W = typename F::wire_type;
+    using E = typename S::element_type;
+    using W = typename S::wire_type;
     if constexpr (W::kind == wire_kind::record) {
         return check_record<E>(in, off, err, std::make_index_sequence<field_count_v<E>>{});
     } else if constexpr (W::kind == wire_kind::text) {
@@ -340,44 +342,44 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(std::span<const std::uint8_t
         return true;
     } else {
         E unused{};  // decode_scalar's checks; the store is dead
-        return decode_scalar<W, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(unused, in, off, err);
+        return decode_scalar<W, Min, Max>(unused, in, off, err);
     }
 }
-template <class M, std::size_t I, std::size_t... K>
+template <class S, std::int64_t Min, std::int64_t Max, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr bool check_array(std::span<const std::uint8_t> in, std::size_t off, error& err,
                                                   std::index_sequence<K...>) noexcept {
-    constexpr std::size_t es = field_t<M, I>::element_size;
-    if constexpr (decode_in_loop<field_t<M, I>>()) {
+    constexpr std::size_t es = S::element_size;
+    if constexpr (decode_in_loop<S>()) {
         if (!std::is_constant_evaluated()) {
             ROBOWIRE_NO_UNROLL
             for (std::size_t k = 0; k < sizeof...(K); ++k)
-                if (!check_element<M, I>(in, off + k * es, err)) return false;
+                if (!check_element<S, Min, Max>(in, off + k * es, err)) return false;
             return true;
         }
     }
-    return (check_element<M, I>(in, off + K * es, err) && ...);
+    return (check_element<S, Min, Max>(in, off + K * es, err) && ...);
 }
-template <class M, std::size_t I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_field(std::span<const std::uint8_t> in, std::size_t base,
+template <class S, std::int64_t Min, std::int64_t Max>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_field(std::span<const std::uint8_t> in, std::size_t off,
                                                   error& err) noexcept {
-    using F = field_t<M, I>;
-    const std::size_t off = base + field_v<M, I>.offset;
-    if constexpr (F::is_optional) {
-        if (in.size() - (off + 1) < F::size - 1) [[unlikely]] {  // one compare: off < size < off + F::size
+    if constexpr (S::is_optional) {
+        if (in.size() - (off + 1) < S::size - 1) [[unlikely]] {  // one compare: off < size < off + S::size
             err = codec::fail_at(errc::bad_length, off);
             return false;
         }
         if (in.size() <= off) return true;  // absent
     }
-    if constexpr (plain_byte_array_v<M, I>) return true;
-    else if constexpr (F::is_array) return check_array<M, I>(in, off, err, std::make_index_sequence<F::count>{});
-    else return check_element<M, I>(in, off, err);
+    if constexpr (plain_byte_array_v<S, Min, Max>) return true;
+    else if constexpr (S::is_array) return check_array<S, Min, Max>(in, off, err, std::make_index_sequence<S::count>{});
+    else return check_element<S, Min, Max>(in, off, err);
 }
 template <class M, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(std::span<const std::uint8_t> in, std::size_t base, error& err,
                                                    std::index_sequence<I...>) noexcept {
     (void)in, (void)base, (void)err;  // messages without fields
-    return (check_field<M, I>(in, base, err) && ...);
+    return (check_field<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(
+                in, base + field_v<M, I>.offset, err) &&
+            ...);
 }
 
 // No byte offset (check_fixed: no fixed byte is skipped).

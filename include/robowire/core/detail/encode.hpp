@@ -77,57 +77,58 @@ ROBOWIRE_ALWAYS_INLINE constexpr void store_scalar(const E& v, std::span<std::ui
     }
 }
 
-template <class M, std::size_t I, class E>
+// Each step below is instantiated per field shape S (member and wire type:
+// table.hpp) and valid range [Min, Max] (checks) or way of storing (stores),
+// not per field. `off` is the field's byte offset in the output.
+template <class S, std::int64_t Min, std::int64_t Max, class E>
 ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off, auto& err) noexcept;
 
 template <class M, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(const M& m, std::size_t base, auto& err,
                                                    std::index_sequence<I...>) noexcept;
 
-template <class M, std::size_t I, class V, std::size_t... K>
+template <class S, std::int64_t Min, std::int64_t Max, class V, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr bool check_array(const V& v, std::size_t off, auto& err,
                                                   std::index_sequence<K...>) noexcept {
-    constexpr std::size_t es = field_t<M, I>::element_size;
-    if constexpr (encode_in_loop<field_t<M, I>>()) {
+    constexpr std::size_t es = S::element_size;
+    if constexpr (encode_in_loop<S>()) {
         if (!std::is_constant_evaluated()) {
             ROBOWIRE_NO_UNROLL
             for (std::size_t k = 0; k < sizeof...(K); ++k)
-                if (!check_element<M, I>(v[k], off + k * es, err)) return false;
+                if (!check_element<S, Min, Max>(v[k], off + k * es, err)) return false;
             return true;
         }
     }
-    return (check_element<M, I>(v[K], off + K * es, err) && ...);
+    return (check_element<S, Min, Max>(v[K], off + K * es, err) && ...);
 }
 
-template <class M, std::size_t I, class V>
+template <class S, std::int64_t Min, std::int64_t Max, class V>
 ROBOWIRE_ALWAYS_INLINE constexpr bool check_value(const V& v, std::size_t off, auto& err) noexcept {
-    using F = field_t<M, I>;
-    if constexpr (F::is_array) return check_array<M, I>(v, off, err, std::make_index_sequence<F::count>{});
-    else return check_element<M, I>(v, off, err);
+    if constexpr (S::is_array) return check_array<S, Min, Max>(v, off, err, std::make_index_sequence<S::count>{});
+    else return check_element<S, Min, Max>(v, off, err);
 }
 
-template <class M, std::size_t I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_field(const M& m, std::size_t base, auto& err) noexcept {
-    const std::size_t off = base + field_v<M, I>.offset;
-    constexpr auto member_ptr = field_v<M, I>.member;
-    const auto& member = m.*member_ptr;
-    using F = field_t<M, I>;
-    if constexpr (F::is_optional) return !member || check_value<M, I>(*member, off, err);
-    else if constexpr (!F::is_array && scalar_wire_v<typename F::wire_type>)
-        return check_scalar<typename F::wire_type, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(member, off, err);
-    else return check_value<M, I>(member, off, err);
+template <class S, std::int64_t Min, std::int64_t Max>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_field(const typename S::member_type& member, std::size_t off,
+                                                  auto& err) noexcept {
+    if constexpr (S::is_optional) return !member || check_value<S, Min, Max>(*member, off, err);
+    else if constexpr (!S::is_array && scalar_wire_v<typename S::wire_type>)
+        return check_scalar<typename S::wire_type, Min, Max>(member, off, err);
+    else return check_value<S, Min, Max>(member, off, err);
 }
 
 template <class M, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(const M& m, std::size_t base, auto& err,
                                                    std::index_sequence<I...>) noexcept {
     (void)m, (void)base, (void)err;  // messages without fields
-    return (check_field<M, I>(m, base, err) && ...);
+    return (check_field<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(
+                m.*(field_v<M, I>.member), base + field_v<M, I>.offset, err) &&
+            ...);
 }
 
-template <class M, std::size_t I, class E>
+template <class S, std::int64_t Min, std::int64_t Max, class E>
 ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off, auto& err) noexcept {
-    using W = typename field_t<M, I>::wire_type;
+    using W = typename S::wire_type;
     if constexpr (W::kind == wire_kind::record) {
         return check_record<E>(v, off, err, std::make_index_sequence<field_count_v<E>>{});
     } else if constexpr (W::kind == wire_kind::text) {
@@ -141,82 +142,82 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off,
     } else if constexpr (W::kind == wire_kind::tail) {
         return true;
     } else {
-        return check_scalar<W, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(v, off, err);
+        return check_scalar<W, Min, Max>(v, off, err);
     }
 }
 
-template <class M, std::size_t I, class E>
+// Whether a checked array of shape S valid in [Min, Max] is stored whole,
+// unless it would be a memcpy call under ROBOWIRE_OPTIMIZE_SIZE.
+template <class S, std::int64_t Min, std::int64_t Max>
+inline constexpr bool store_whole_v = plain_byte_array_v<S, Min, Max> || (!ROBOWIRE_OPTIMIZE_SIZE && byte_array_v<S>);
+
+template <class S, class E>
 ROBOWIRE_ALWAYS_INLINE constexpr void store_element(const E& v, std::span<std::uint8_t> out, std::size_t off) noexcept;
 
 template <class M, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr void store_record(const M& m, std::span<std::uint8_t> out, std::size_t base,
                                                    std::index_sequence<I...>) noexcept;
 
-template <class M, std::size_t I, class V, std::size_t... K>
+template <class S, class V, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr void store_array(const V& v, std::span<std::uint8_t> out, std::size_t off,
                                                   std::index_sequence<K...>) noexcept {
-    constexpr std::size_t es = field_t<M, I>::element_size;
-    if constexpr (encode_in_loop<field_t<M, I>>()) {
+    constexpr std::size_t es = S::element_size;
+    if constexpr (encode_in_loop<S>()) {
         if (!std::is_constant_evaluated()) {
             ROBOWIRE_NO_UNROLL
-            for (std::size_t k = 0; k < sizeof...(K); ++k) store_element<M, I>(v[k], out, off + k * es);
+            for (std::size_t k = 0; k < sizeof...(K); ++k) store_element<S>(v[k], out, off + k * es);
             return;
         }
     }
-    (store_element<M, I>(v[K], out, off + K * es), ...);
+    (store_element<S>(v[K], out, off + K * es), ...);
 }
 
-template <class M, std::size_t I, class V>
+template <class S, bool Whole, class V>
 ROBOWIRE_ALWAYS_INLINE constexpr void store_value(const V& v, std::span<std::uint8_t> out, std::size_t off) noexcept {
-    using F = field_t<M, I>;
-    // Checked already: whole, unless it would be a memcpy call under ROBOWIRE_OPTIMIZE_SIZE.
-    if constexpr (plain_byte_array_v<M, I> || (!ROBOWIRE_OPTIMIZE_SIZE && byte_array_v<M, I>)) {
+    if constexpr (Whole) {
         if (!std::is_constant_evaluated()) {
-            std::memcpy(out.data() + off, v.data(), F::count);
+            std::memcpy(out.data() + off, v.data(), S::count);
             return;
         }
     }
-    if constexpr (F::is_array) store_array<M, I>(v, out, off, std::make_index_sequence<F::count>{});
-    else store_element<M, I>(v, out, off);
+    if constexpr (S::is_array) store_array<S>(v, out, off, std::make_index_sequence<S::count>{});
+    else store_element<S>(v, out, off);
 }
 
-template <class M, std::size_t I>
-ROBOWIRE_ALWAYS_INLINE constexpr void store_field(const M& m, std::span<std::uint8_t> out, std::size_t base) noexcept {
-    const std::size_t off = base + field_v<M, I>.offset;
-    constexpr auto member_ptr = field_v<M, I>.member;
-    const auto& member = m.*member_ptr;
-    using F = field_t<M, I>;
-    if constexpr (F::is_optional) {
-        if (member) store_value<M, I>(*member, out, off);
-    } else if constexpr (!F::is_array && scalar_wire_v<typename F::wire_type>) {
-        store_scalar<typename F::wire_type>(member, out, off);
+template <class S, bool Whole>
+ROBOWIRE_ALWAYS_INLINE constexpr void store_field(const typename S::member_type& member, std::span<std::uint8_t> out,
+                                                  std::size_t off) noexcept {
+    if constexpr (S::is_optional) {
+        if (member) store_value<S, Whole>(*member, out, off);
+    } else if constexpr (!S::is_array && scalar_wire_v<typename S::wire_type>) {
+        store_scalar<typename S::wire_type>(member, out, off);
     } else {
-        store_value<M, I>(member, out, off);
+        store_value<S, Whole>(member, out, off);
     }
 }
 
 // ---- runs (ROBOWIRE_COPY_RUNS; access.hpp), the encode side: a run is
-// copied from the object into the output.
-template <class M>
-ROBOWIRE_ALWAYS_INLINE void store_run(const M& m, std::span<std::uint8_t> out, const run& r) noexcept {
-    if (r.size != 0) copy_run(out.data() + r.wire, reinterpret_cast<const unsigned char*>(&m) + r.mem, r.size);
+// copied from the object at `obj` into the output.
+ROBOWIRE_ALWAYS_INLINE void store_run(const unsigned char* obj, std::span<std::uint8_t> out, const run& r) noexcept {
+    if (r.size != 0) copy_run(out.data() + r.wire, obj + r.mem, r.size);
 }
-// Field I: joins the current run, starts one, or is stored on its own.
-template <class M, std::size_t I>
-ROBOWIRE_ALWAYS_INLINE void copy_or_store(const M& m, std::span<std::uint8_t> out, std::size_t base, run& r) noexcept {
-    const std::size_t size = field_copy_size<M, I>(m);
+// A field at byte `wire`: joins the current run, starts one, or is stored on its own.
+template <class S, bool Whole>
+ROBOWIRE_ALWAYS_INLINE void copy_or_store(const unsigned char* obj, const typename S::member_type& member,
+                                          std::span<std::uint8_t> out, std::size_t wire, run& r) noexcept {
+    const std::size_t size = copy_size<S>(member);
     if (size != 0) {
-        const std::size_t wire = base + field_v<M, I>.offset, mem = offset_in(m, &(m.*(field_v<M, I>.member)));
+        const std::size_t mem = offset_in(obj, &member);
         if (r.size != 0 && r.wire + r.size == wire && r.mem + r.size == mem) {
             r.size += size;
         } else {
-            store_run(m, out, r);
+            store_run(obj, out, r);
             r = {wire, mem, size};
         }
     } else {
-        store_run(m, out, r);
+        store_run(obj, out, r);
         r = {};
-        store_field<M, I>(m, out, base);
+        store_field<S, Whole>(member, out, wire);
     }
 }
 
@@ -226,19 +227,25 @@ ROBOWIRE_ALWAYS_INLINE constexpr void store_record(const M& m, std::span<std::ui
     (void)m, (void)out, (void)base;  // messages without fields
     if constexpr (ROBOWIRE_COPY_RUNS) {
         if (!std::is_constant_evaluated()) {
+            const auto obj = reinterpret_cast<const unsigned char*>(&m);
             run r{};
-            (copy_or_store<M, I>(m, out, base, r), ...);
-            store_run(m, out, r);
+            (copy_or_store<shape_t<M, I>,
+                           store_whole_v<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max>>(
+                 obj, m.*(field_v<M, I>.member), out, base + field_v<M, I>.offset, r),
+             ...);
+            store_run(obj, out, r);
             return;
         }
     }
-    (store_field<M, I>(m, out, base), ...);
+    (store_field<shape_t<M, I>, store_whole_v<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max>>(
+         m.*(field_v<M, I>.member), out, base + field_v<M, I>.offset),
+     ...);
 }
 
 // Writes one checked element.
-template <class M, std::size_t I, class E>
+template <class S, class E>
 ROBOWIRE_ALWAYS_INLINE constexpr void store_element(const E& v, std::span<std::uint8_t> out, std::size_t off) noexcept {
-    using W = typename field_t<M, I>::wire_type;
+    using W = typename S::wire_type;
     if constexpr (W::kind == wire_kind::record) {
         store_record<E>(v, out, off, std::make_index_sequence<field_count_v<E>>{});
     } else if constexpr (W::kind == wire_kind::text) {
