@@ -129,7 +129,7 @@ constexpr auto fuzz_token_list_of() noexcept {
 
 // The fuzz dictionary of a protocol's variants: every run of fixed bytes at
 // consecutive offsets of every alternative (markers with command bytes, a
-// trailer), each once, in variant order. A descriptor's `dictionary`.
+// trailer), each once, in variant order.
 template <class... Variants>
 inline constexpr auto fuzz_tokens_v = [] {
     constexpr auto all = detail::fuzz_token_list_of<Variants...>();
@@ -137,6 +137,15 @@ inline constexpr auto fuzz_tokens_v = [] {
     for (std::size_t i = 0; i < all.size; ++i) out[i] = all.tokens[i];
     return out;
 }();
+// The fuzz dictionary of a protocol, from its `messages` (message_variants):
+// fuzz_tokens_v of its variants, e.g. fuzz_dictionary_v<osp::messages>.
+template <class Messages>
+inline constexpr const auto& fuzz_dictionary_v = []() -> const auto& {
+    if constexpr (Messages::has_directions)
+        return fuzz_tokens_v<typename Messages::to_device, typename Messages::from_device>;
+    else return fuzz_tokens_v<typename Messages::to_device>;
+}
+();
 
 // ---------------------------------------------------------------- lengths
 // The input lengths M's decoder accepts as runs [first, last], increasing

@@ -1,4 +1,5 @@
 #include <robowire/protocols.hpp>
+#include <robowire/reflect.hpp>
 
 #include <catch2/catch.hpp>
 #include <cstdint>
@@ -69,24 +70,45 @@ TEST_CASE("descriptors: message variants by direction and fuzz dictionaries", "[
     STATIC_REQUIRE_FALSE(osp::descriptor.has_directions);
     STATIC_REQUIRE_FALSE(navbot::descriptor.has_directions);
 
+    constexpr const auto& osp_dict = fuzz_dictionary_v<osp::messages>;
+    constexpr const auto& buwizz3_dict = fuzz_dictionary_v<buwizz3::messages>;
+    constexpr const auto& navbot_dict = fuzz_dictionary_v<navbot::messages>;
     // OSP: FF AA DEV CMD for each of the 11 messages (OBP1's requests CMD 01..04,
     // its answers 11..14) and the trailer 55 77, once each.
-    STATIC_REQUIRE(osp::descriptor.dictionary.size() == 12);
-    STATIC_REQUIRE(has_token(osp::descriptor.dictionary, {0xFF, 0xAA, 0x00, 0x01}));  // REQ_DEVICE_TYPE
-    STATIC_REQUIRE(has_token(osp::descriptor.dictionary, {0xFF, 0xAA, 0x01, 0x02}));  // ARM1 set angle
-    STATIC_REQUIRE(has_token(osp::descriptor.dictionary, {0xFF, 0xAA, 0x02, 0x14}));
-    STATIC_REQUIRE(has_token(osp::descriptor.dictionary, {0x55, 0x77}));
-    STATIC_REQUIRE_FALSE(has_token(osp::descriptor.dictionary, {0xFF, 0xAA}));  // only with DEV CMD
-    STATIC_REQUIRE(no_repeats(osp::descriptor.dictionary));
+    STATIC_REQUIRE(osp_dict.size() == 12);
+    STATIC_REQUIRE(has_token(osp_dict, {0xFF, 0xAA, 0x00, 0x01}));  // REQ_DEVICE_TYPE
+    STATIC_REQUIRE(has_token(osp_dict, {0xFF, 0xAA, 0x01, 0x02}));  // ARM1 set angle
+    STATIC_REQUIRE(has_token(osp_dict, {0xFF, 0xAA, 0x02, 0x14}));
+    STATIC_REQUIRE(has_token(osp_dict, {0x55, 0x77}));
+    STATIC_REQUIRE_FALSE(has_token(osp_dict, {0xFF, 0xAA}));  // only with DEV CMD
+    STATIC_REQUIRE(no_repeats(osp_dict));
 
     // BuWizz3: a command byte each (0x40 with its sub-command 0x10), 0x01 the status.
-    STATIC_REQUIRE(has_token(buwizz3::descriptor.dictionary, {0x30}));  // set motor data
-    STATIC_REQUIRE(has_token(buwizz3::descriptor.dictionary, {0x40, 0x10}));
-    STATIC_REQUIRE(has_token(buwizz3::descriptor.dictionary, {0x01}));
-    STATIC_REQUIRE(no_repeats(buwizz3::descriptor.dictionary));
+    STATIC_REQUIRE(has_token(buwizz3_dict, {0x30}));  // set motor data
+    STATIC_REQUIRE(has_token(buwizz3_dict, {0x40, 0x10}));
+    STATIC_REQUIRE(has_token(buwizz3_dict, {0x01}));
+    STATIC_REQUIRE(no_repeats(buwizz3_dict));
 
     // NAVBOT: 55 AA, and a maneuver's 55 AA 10 00 (command 0x10, remaining 0).
-    STATIC_REQUIRE(navbot::descriptor.dictionary.size() == 2);
-    STATIC_REQUIRE(has_token(navbot::descriptor.dictionary, {0x55, 0xAA, 0x10, 0x00}));
-    STATIC_REQUIRE(has_token(navbot::descriptor.dictionary, {0x55, 0xAA}));
+    STATIC_REQUIRE(navbot_dict.size() == 2);
+    STATIC_REQUIRE(has_token(navbot_dict, {0x55, 0xAA, 0x10, 0x00}));
+    STATIC_REQUIRE(has_token(navbot_dict, {0x55, 0xAA}));
+}
+
+// for_each_protocol: all_protocols' descriptors, in that order, each with its messages.
+TEST_CASE("descriptors: for_each_protocol pairs each descriptor with its messages", "[core][descriptor]") {
+    constexpr bool paired = [] {
+        std::size_t n = 0;
+        bool ok = true;
+        for_each_protocol([&](auto entry) {
+            using messages = typename decltype(entry)::messages;
+            ok = ok && n < std::size(all_protocols) && &entry.descriptor == all_protocols[n];
+            if (entry.descriptor.name == "buwizz3") ok = ok && std::is_same_v<messages, buwizz3::messages>;
+            else if (entry.descriptor.name == "navbot") ok = ok && std::is_same_v<messages, navbot::messages>;
+            else ok = ok && std::is_same_v<messages, osp::messages>;
+            ++n;
+        });
+        return ok && n == 3;
+    }();
+    STATIC_REQUIRE(paired);
 }

@@ -17,3 +17,10 @@ template <> robowire::result<robowire::bytes<10>> osp::encode<osp::message>(cons
 template <> robowire::result<bw::command> bw::decode_command<bw::command>(std::span<const std::uint8_t>) noexcept;
 template <> robowire::result<bw::notification> bw::decode_notification<bw::notification>(std::span<const std::uint8_t>) noexcept;
 template <> robowire::result<bw::status> robowire::decode<bw::status>(std::span<const std::uint8_t>) noexcept;
+
+// Nor any table, nor a fuzz dictionary (the descriptors of protocols.hpp walk
+// no table: every TU that includes robowire.hpp would pay for them).
+template <> inline constexpr auto robowire::table_v<bw::status> = table_of(std::type_identity<bw::status>{});
+template <> inline constexpr auto robowire::table_v<bw::set_motor_data> = table_of(std::type_identity<bw::set_motor_data>{});
+template <> inline constexpr auto robowire::table_v<osp::obp1::voltage> = table_of(std::type_identity<osp::obp1::voltage>{});
+template <> inline constexpr auto robowire::fuzz_tokens_v<osp::message> = std::array<robowire::fuzz_token, 0>{};

@@ -5,7 +5,6 @@
 #include "../core/config.hpp"  // first: the C++ version check
 
 #include "../core/descriptor.hpp"
-#include "../reflect.hpp"
 #include "decode.hpp"
 #include "uuids.hpp"
 
@@ -15,8 +14,7 @@ inline constexpr characteristic characteristics[] = {
     {application_uuid, gatt_direction::both, "BuWizz3 application characteristic"},
 };
 using messages = message_variants<command, notification>;
-inline constexpr protocol_descriptor descriptor{
-    "buwizz3",         "BLE; byte 0 = command",  characteristics,
-    stream_kind::none, messages::has_directions, fuzz_tokens_v<command, notification>};
+inline constexpr protocol_descriptor descriptor{"buwizz3", "BLE; byte 0 = command", characteristics, stream_kind::none,
+                                                messages::has_directions};
 
 }  // namespace robowire::buwizz3

@@ -1,6 +1,6 @@
 // robowire/core/descriptor.hpp - what a protocol is, in one constexpr table:
-// name, summary, GATT characteristics, stream kind, fuzz dictionary; and its
-// message variants per direction (types, beside it). Tools iterate these.
+// name, summary, GATT characteristics, stream kind; and its message variants
+// per direction (types, beside it). Tools iterate these.
 #pragma once
 
 #include "config.hpp"  // first: the C++ version check
@@ -36,8 +36,8 @@ struct characteristic {
     std::string_view label;  // e.g. "NAVBOT write characteristic"
 };
 
-// One fuzz dictionary entry: bytes that a message's table fixes at
-// consecutive offsets (markers, command bytes), 1..16 of them.
+// One fuzz dictionary entry (fuzz_dictionary_v, reflect.hpp): bytes that a
+// message's table fixes at consecutive offsets (markers, command bytes), 1..16 of them.
 struct fuzz_token {
     std::uint8_t bytes[16];
     std::uint8_t size;
@@ -55,15 +55,15 @@ struct message_variants {
     static constexpr bool has_directions = !std::is_same_v<ToDevice, FromDevice>;
 };
 
-// One protocol: what the command-line tool, the log reader, the schema, the
-// Python module and the fuzz dictionaries (fuzz/dict/) know of it.
+// One protocol: what the command-line tool, the log reader, the schema and
+// the Python module know of it. Including it computes nothing from the
+// tables (the fuzz dictionary is fuzz_dictionary_v<messages>, reflect.hpp).
 struct protocol_descriptor {
     std::string_view name;                            // lower case, e.g. "osp"
     std::string_view summary;                         // one line
     std::span<const characteristic> characteristics;  // empty: no GATT (serial)
     stream_kind stream;
-    bool has_directions;                     // the messages differ by direction (message_variants)
-    std::span<const fuzz_token> dictionary;  // every message's fixed byte runs (fuzz_tokens_v)
+    bool has_directions;  // the messages differ by direction (message_variants)
 
     // The characteristic with this UUID, or nullptr.
     constexpr const characteristic* find(const uuid128& u) const noexcept {

@@ -5,7 +5,6 @@
 #include "../core/config.hpp"  // first: the C++ version check
 
 #include "../core/descriptor.hpp"
-#include "../reflect.hpp"
 #include "decode.hpp"
 #include "frame.hpp"
 
@@ -16,11 +15,7 @@ inline constexpr characteristic characteristics[] = {
     {notify_uuid, gatt_direction::from_device, "NAVBOT notify characteristic"},
 };
 using messages = message_variants<message>;
-inline constexpr protocol_descriptor descriptor{"navbot",
-                                                "BLE; 20-byte frames",
-                                                characteristics,
-                                                stream_kind::reassembler,
-                                                messages::has_directions,
-                                                fuzz_tokens_v<message>};
+inline constexpr protocol_descriptor descriptor{"navbot", "BLE; 20-byte frames", characteristics,
+                                                stream_kind::reassembler, messages::has_directions};
 
 }  // namespace robowire::navbot

@@ -5,17 +5,12 @@
 #include "../core/config.hpp"  // first: the C++ version check
 
 #include "../core/descriptor.hpp"
-#include "../reflect.hpp"
 #include "messages.hpp"
 
 namespace robowire::osp {
 
 using messages = message_variants<message>;
-inline constexpr protocol_descriptor descriptor{"osp",
-                                                "serial; FF AA DEV CMD P1..P4 55 77",
-                                                {},
-                                                stream_kind::scanner,
-                                                messages::has_directions,
-                                                fuzz_tokens_v<message>};
+inline constexpr protocol_descriptor descriptor{
+    "osp", "serial; FF AA DEV CMD P1..P4 55 77", {}, stream_kind::scanner, messages::has_directions};
 
 }  // namespace robowire::osp
