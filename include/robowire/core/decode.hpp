@@ -124,52 +124,63 @@ ROBOWIRE_COLD constexpr error input_error(const std::uint8_t* data, std::size_t 
 }
 // Whether every fixed byte of M but the one at offset Known lies within the
 // shortest input: then one test of the length and the bytes finds every error.
-template <std::size_t Known, class M>
-inline constexpr bool fixed_within_min_v = [] {
-    for (const auto& f : table_v<M>.fixed)
-        if (f.offset != Known && f.offset >= table_v<M>.min_size()) return false;
+constexpr bool fixed_within(const fixed_byte* fixed, std::size_t n, std::size_t known, std::size_t min) noexcept {
+    for (std::size_t i = 0; i < n; ++i)
+        if (fixed[i].offset != known && fixed[i].offset >= min) return false;
     return true;
-}();
+}
+template <std::size_t Known, class M>
+inline constexpr bool fixed_within_min_v = fixed_within(table_v<M>.fixed.data(), fixed_count_v<M>, Known,
+                                                        table_v<M>.min_size());
 // The fixed bytes of M but the one at offset Known, as masked words of the
 // shortest input (ROBOWIRE_COPY_RUNS targets): each word a load, an xor and an
 // and, as a hand-written decoder compares its markers. The words are as
 // narrow as takes no more of them (a 4-byte header: one 32-bit compare).
+// Worked out by plain functions (one definition for every message: cheaper
+// to compile than a lambda and a local type per message).
 struct fixed_word {
     std::size_t start = 0;
     std::uint64_t mask = 0, value = 0;
 };
-template <std::size_t Known, class M>
-inline constexpr auto fixed_words_v = [] {
-    constexpr std::size_t min = table_v<M>.min_size();
-    struct words {
-        std::array<fixed_word, fixed_count_v<M> + 1> w{};
-        std::size_t count = 0, width = 0;
-    };
-    constexpr auto cover = [](std::size_t width) {
-        words r{};
-        r.width = width;
-        for (const auto& f : table_v<M>.fixed) {
-            if (f.offset == Known) continue;
-            bool covered = false;
-            for (std::size_t k = 0; k < r.count; ++k)
-                covered = covered || (f.offset >= r.w[k].start && f.offset < r.w[k].start + width);
-            if (!covered) r.w[r.count++].start = f.offset + width <= min ? f.offset : min - width;
-        }
-        return r;
-    };
-    constexpr std::size_t widest = min >= 8 ? 8 : min >= 4 ? 4 : min >= 2 ? 2 : 1;
-    std::size_t width = widest;
-    for (std::size_t w = widest / 2; w >= 1 && cover(w).count == cover(widest).count; w /= 2) width = w;
-    words r = cover(width);
+inline constexpr std::size_t max_fixed_words = 16;  // messages with more fixed bytes compare them one by one
+struct fixed_words {
+    fixed_word w[max_fixed_words]{};
+    std::size_t count = 0, width = 0;
+};
+// Words of `width` bytes covering fixed[0..n) but the byte at offset `known`,
+// each within the first `min` bytes.
+constexpr fixed_words cover_fixed(const fixed_byte* fixed, std::size_t n, std::size_t known, std::size_t min,
+                                  std::size_t width) noexcept {
+    fixed_words r{};
+    r.width = width;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t at = fixed[i].offset;
+        if (at == known) continue;
+        bool covered = false;
+        for (std::size_t k = 0; k < r.count; ++k)
+            covered = covered || (at >= r.w[k].start && at < r.w[k].start + width);
+        if (!covered) r.w[r.count++].start = at + width <= min ? at : min - width;
+    }
     for (std::size_t k = 0; k < r.count; ++k)
-        for (const auto& f : table_v<M>.fixed)
-            if (f.offset != Known && f.offset >= r.w[k].start && f.offset < r.w[k].start + width) {
-                const auto shift = 8 * (f.offset - r.w[k].start);
+        for (std::size_t i = 0; i < n; ++i)
+            if (fixed[i].offset != known && fixed[i].offset >= r.w[k].start && fixed[i].offset < r.w[k].start + width) {
+                const auto shift = 8 * (fixed[i].offset - r.w[k].start);
                 r.w[k].mask |= std::uint64_t{0xFF} << shift;
-                r.w[k].value |= std::uint64_t{f.value} << shift;
+                r.w[k].value |= std::uint64_t{fixed[i].value} << shift;
             }
     return r;
-}();
+}
+constexpr fixed_words make_fixed_words(const fixed_byte* fixed, std::size_t n, std::size_t known,
+                                       std::size_t min) noexcept {
+    const std::size_t widest = min >= 8 ? 8 : min >= 4 ? 4 : min >= 2 ? 2 : 1;
+    const std::size_t most = cover_fixed(fixed, n, known, min, widest).count;
+    std::size_t width = widest;
+    for (std::size_t w = widest / 2; w >= 1 && cover_fixed(fixed, n, known, min, w).count == most; w /= 2) width = w;
+    return cover_fixed(fixed, n, known, min, width);
+}
+template <std::size_t Known, class M>
+inline constexpr fixed_words fixed_words_v = make_fixed_words(table_v<M>.fixed.data(), fixed_count_v<M>, Known,
+                                                              table_v<M>.min_size());
 template <std::size_t Known, class M, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE bool fixed_words_match(const std::uint8_t* in, std::index_sequence<K...>) noexcept {
     constexpr auto& words = fixed_words_v<Known, M>;
@@ -194,7 +205,8 @@ ROBOWIRE_ALWAYS_INLINE bool fixed_words_match(const std::uint8_t* in, std::index
 template <std::size_t Known, class M, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr bool fixed_match(std::span<const std::uint8_t> in,
                                                   std::index_sequence<K...>) noexcept {
-    if constexpr (ROBOWIRE_COPY_RUNS && std::endian::native == std::endian::little) {
+    if constexpr (ROBOWIRE_COPY_RUNS && std::endian::native == std::endian::little &&
+                  fixed_count_v<M> < max_fixed_words) {
         if (!std::is_constant_evaluated())
             return fixed_words_match<Known, M>(in.data(), std::make_index_sequence<fixed_words_v<Known, M>.count>{});
     }
