@@ -159,6 +159,13 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key_chain(decode_result& d, std:
 constexpr std::uint16_t wire_key(std::uint16_t key) noexcept {
     return static_cast<std::uint16_t>(key >> 8 | (key & 0xFF) << 8);
 }
+// osp::message, named through template arguments: where the name does not
+// depend on one, clang++ evaluates keys_v and sorted_keys_v, and so every
+// OSP table, in each file that includes this header.
+template <auto...>
+struct dependent_message {
+    using type = message;
+};
 // (wire_key, alternative index) of each alternative, sorted by wire_key.
 template <class Message>
 inline constexpr auto sorted_keys_v = [] {
@@ -177,7 +184,7 @@ inline constexpr auto sorted_keys_v = [] {
 template <std::size_t Lo, std::size_t Hi, bool FlagSet>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_in_range(decode_result& d, std::uint16_t key,
                                                       std::span<const std::uint8_t> in) noexcept {
-    constexpr auto& k = sorted_keys_v<message>;
+    constexpr auto& k = sorted_keys_v<typename dependent_message<Lo>::type>;
 #if defined(__clang__)  // clang++ makes `key > k` a second compare (`key < k + 1`), in either order
     if constexpr (Hi - Lo == 1) {
         if (key == k[Lo][0]) decode_message<k[Lo][1], FlagSet>(d, in);
@@ -210,7 +217,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::span<
         } else {  // the key's index by a loop over keys_v (in flash), then a dense switch on it
             const auto key = static_cast<std::uint16_t>(in[2] << 8 | in[3]);
             std::size_t i = 0;
-            while (i < sizeof...(I) && keys_v<message>[i] != key) ++i;
+            while (i < sizeof...(I) && keys_v<typename dependent_message<I...>::type>[i] != key) ++i;
             if (i == sizeof...(I)) d = fail(errc::unknown_message, 2);
             else ((i == I ? decode_message<I>(d, in) : void()), ...);
         }
