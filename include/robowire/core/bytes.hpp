@@ -21,7 +21,7 @@ namespace codec {
 // Copies n <= 16 bytes. At run time: two fixed-size (overlapping) copies,
 // never a call to memcpy.
 constexpr void copy_small(std::uint8_t* to, const std::uint8_t* from, std::size_t n) noexcept {
-    if (std::is_constant_evaluated()) {
+    if (ROBOWIRE_CONSTANT_EVALUATED()) {
         for (std::size_t k = 0; k < n; ++k) to[k] = from[k];
         return;
     }
@@ -39,7 +39,7 @@ constexpr void copy_small(std::uint8_t* to, const std::uint8_t* from, std::size_
 namespace detail {
 // n bytes at a and at b are equal (memcmp at run time, as std::equal does).
 constexpr bool same_bytes(const std::uint8_t* a, const std::uint8_t* b, std::size_t n) noexcept {
-    if (std::is_constant_evaluated()) {
+    if (ROBOWIRE_CONSTANT_EVALUATED()) {
         for (std::size_t k = 0; k < n; ++k)
             if (a[k] != b[k]) return false;
         return true;
@@ -171,7 +171,7 @@ requires(N >= 4) struct detail::niche<bytes<N>> {
         b.data_[3] = static_cast<std::uint8_t>(e.offset >> 8);
     }
     static constexpr bytes<N> make_error(error e) noexcept {
-        bytes<N> b = std::is_constant_evaluated() ? bytes<N>() : bytes<N>(codec::unset_t{});
+        bytes<N> b = ROBOWIRE_CONSTANT_EVALUATED() ? bytes<N>() : bytes<N>(codec::unset_t{});
         set_error(b, e);
         return b;
     }
@@ -217,7 +217,7 @@ inline constexpr auto hex_pairs = [] {
     if (need > out.size()) return fail(errc::buffer_too_small, need);
     char* o = out.data();
     if constexpr (!ROBOWIRE_OPTIMIZE_SIZE) {  // a pair of digits per table entry, the separator test outside the loop
-        if (!std::is_constant_evaluated() && !in.empty()) {
+        if (!ROBOWIRE_CONSTANT_EVALUATED() && !in.empty()) {
             const std::size_t last = in.size() - 1;
             if (separator) {
                 for (std::size_t i = 0; i < last; ++i, o += 3) {

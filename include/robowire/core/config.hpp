@@ -103,6 +103,24 @@
 #elif ROBOWIRE_ARRAY_LOOPS != 0 && ROBOWIRE_ARRAY_LOOPS != 1 && ROBOWIRE_ARRAY_LOOPS != 2
 #error "ROBOWIRE_ARRAY_LOOPS must be 0, 1 or 2"
 #endif
+// std::is_constant_evaluated() as the compiler's builtin, folded where it is
+// written: inside an always-inlined step g++ leaves a call to the library
+// function until the outermost caller, with both branches copied into every
+// step between.
+#if defined(__has_builtin)
+#if __has_builtin(__builtin_is_constant_evaluated)
+#define ROBOWIRE_CONSTANT_EVALUATED() __builtin_is_constant_evaluated()
+#else
+#include <type_traits>
+#define ROBOWIRE_CONSTANT_EVALUATED() std::is_constant_evaluated()
+#endif
+#elif defined(_MSC_VER)
+#define ROBOWIRE_CONSTANT_EVALUATED() __builtin_is_constant_evaluated()
+#else
+#include <type_traits>
+#define ROBOWIRE_CONSTANT_EVALUATED() std::is_constant_evaluated()
+#endif
+
 // A loop the compiler keeps rolled (ROBOWIRE_ARRAY_LOOPS).
 #if defined(__GNUC__) || defined(__clang__)
 #define ROBOWIRE_NO_UNROLL _Pragma("GCC unroll 1")

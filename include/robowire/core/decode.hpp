@@ -33,10 +33,8 @@ namespace codec::inline ROBOWIRE_MODE_NAMESPACE {
 // (matched by a dispatcher already).
 template <class M, std::size_t Skip = detail::no_offset, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr error check_fixed(std::span<const std::uint8_t> in,
-                                                   std::index_sequence<K...>) noexcept {
-    error e{};
-    (void)(detail::fixed_wrong<M, Skip, K>(in, e) || ...);
-    return e;
+                                                   std::index_sequence<K...> fixed) noexcept {
+    return detail::fixed_error<M, Skip>(in, fixed);
 }
 
 // M's fields from `in`, without the fixed-byte and length checks: for
@@ -47,17 +45,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr error check_fixed(std::span<const std::uint8_t>
 // output that is discarded on an error, such as a dispatcher's result).
 template <described M>
 ROBOWIRE_ALWAYS_INLINE constexpr error decode_fields(M& out, std::span<const std::uint8_t> in) noexcept {
-    error err{};
-    const auto known = in.first(table_v<M>.max_size());
-    constexpr auto fields = std::make_index_sequence<detail::field_count_v<M>>{};
-    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
-        (void)detail::decode_record<M>(out, known, 0, err, fields);
-        return err;
-    }
-    if (!detail::check_record<M>(known, 0, err, fields)) return err;
-    detail::prechecked none{};
-    (void)detail::decode_record<M>(out, known, 0, none, fields);
-    return err;
+    return detail::fields_into(out, detail::in_bytes(in));
 }
 }  // namespace codec::inline ROBOWIRE_MODE_NAMESPACE
 
@@ -83,7 +71,7 @@ inline constexpr bool message_via_local = false, alternative_via_local = true;
 // The write pass: M's fields from an input whose fixed bytes, length and
 // fields are checked (check_record); no branch, runs copied at once.
 template <class M>
-ROBOWIRE_ALWAYS_INLINE constexpr void write_body(M& out, std::span<const std::uint8_t> in) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr void write_body(M& out, in_bytes in) noexcept {
     constexpr std::size_t extent = table_v<M>.max_size();
     prechecked none{};
     (void)decode_record<M>(out, in.size() > extent ? in.first(extent) : in, 0, none,
@@ -98,7 +86,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr void write_body(M& out, std::span<const std::ui
 // Fresh (with OnePass): `out` was made just before, so absent optional blocks
 // are empty already.
 template <class M, bool OnePass = false, bool Fresh = false>
-ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, std::span<const std::uint8_t> in) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, in_bytes in) noexcept {
     constexpr std::size_t extent = table_v<M>.max_size();
     constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
     std::conditional_t<OnePass && Fresh, fresh, error> err{};
@@ -116,11 +104,11 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, std::span<const std::
 // byte `in` has, else the length's. Out of line (the good path sets up no error).
 template <std::size_t Known, class M>
 ROBOWIRE_COLD constexpr error input_error(const std::uint8_t* data, std::size_t size) noexcept {
-    const std::span<const std::uint8_t> in(data, size);
-    if (const error e = codec::check_fixed<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{});
-        e.code != errc::ok)
+    const in_bytes in(data, size);
+    if (const error e = fixed_error<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{}); e.code != errc::ok)
         return e;
-    return length_error(size, table_v<M>.min_size(), table_v<M>.max_input());
+    constexpr std::size_t max = table_v<M>.max_input();
+    return length_error(size, min_size_v<M>, max);
 }
 // Whether every fixed byte of M but the one at offset Known lies within the
 // shortest input: then one test of the length and the bytes finds every error.
@@ -203,11 +191,10 @@ ROBOWIRE_ALWAYS_INLINE bool fixed_words_match(const std::uint8_t* in, std::index
 // The fixed bytes of M but the one at offset Known, all compared (no branch
 // between them); `in` holds them all.
 template <std::size_t Known, class M, std::size_t... K>
-ROBOWIRE_ALWAYS_INLINE constexpr bool fixed_match(std::span<const std::uint8_t> in,
-                                                  std::index_sequence<K...>) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr bool fixed_match(in_bytes in, std::index_sequence<K...>) noexcept {
     if constexpr (ROBOWIRE_COPY_RUNS && std::endian::native == std::endian::little &&
                   fixed_count_v<M> < max_fixed_words) {
-        if (!std::is_constant_evaluated())
+        if (!ROBOWIRE_CONSTANT_EVALUATED())
             return fixed_words_match<Known, M>(in.data(), std::make_index_sequence<fixed_words_v<Known, M>.count>{});
     }
     unsigned diff = 0;
@@ -220,7 +207,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool fixed_match(std::span<const std::uint8_t> 
 // already (no_offset: every fixed byte is checked), then the input's length.
 // On a failure makes r (an error, or a result) hold the error and returns false.
 template <std::size_t Known, class M, class R>
-ROBOWIRE_ALWAYS_INLINE constexpr bool input_ok(R& r, std::span<const std::uint8_t> in) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr bool input_ok(R& r, in_bytes in) noexcept {
     constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input();
     if constexpr (fixed_within_min_v<Known, M> && !ROBOWIRE_OPTIMIZE_SIZE) {  // size: no cold function per message
         if (in.size() - min <= max - min && fixed_match<Known, M>(in, std::make_index_sequence<fixed_count_v<M>>{}))
@@ -229,7 +216,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool input_ok(R& r, std::span<const std::uint8_
         r = input_error<Known, M>(in.data(), in.size());
         return false;
     } else {
-        if (const error e = codec::check_fixed<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{});
+        if (const error e = fixed_error<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{});
             e.code != errc::ok) {
             r = e;
             return false;
@@ -243,11 +230,10 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool input_ok(R& r, std::span<const std::uint8_
 }
 // decode_into without the check of the fixed byte at offset Known.
 template <std::size_t Known, class M, bool Keep = true>
-ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, std::span<const std::uint8_t> in) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, in_bytes in) noexcept {
     if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // no call, each error returned as found: smaller code
         constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input();
-        if (const error e = codec::check_fixed<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{});
-            e.code != errc::ok)
+        if (const error e = fixed_error<M, Known>(in, std::make_index_sequence<fixed_count_v<M>>{}); e.code != errc::ok)
             return e;
         if (in.size() < min) return codec::fail_at(errc::too_short, in.size());
         if (in.size() > max) return codec::fail_at(errc::too_long, max);
@@ -263,11 +249,11 @@ template <class M, bool Keep = true>
 constexpr error decode_raw(M& out, const std::uint8_t* data, std::size_t size) noexcept {
     if constexpr (message_via_local && !ROBOWIRE_OPTIMIZE_SIZE && decode_writes_every_member_v<M>) {
         M local{};
-        const error e = decode_checked<no_offset>(local, std::span<const std::uint8_t>(data, size));
+        const error e = decode_checked<no_offset>(local, in_bytes(data, size));
         if (e.code == errc::ok) out = local;
         return e;
     } else {
-        return decode_checked<no_offset, M, Keep>(out, std::span<const std::uint8_t>(data, size));
+        return decode_checked<no_offset, M, Keep>(out, in_bytes(data, size));
     }
 }
 }  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE

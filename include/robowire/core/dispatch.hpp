@@ -26,7 +26,7 @@ namespace codec {
 template <std::size_t I, class Variant>
 inline constexpr auto& emplace_alternative(Variant& v) noexcept {
 #if defined(__clang__)
-    if (std::is_constant_evaluated()) {
+    if (ROBOWIRE_CONSTANT_EVALUATED()) {
         v = Variant(std::in_place_index<I>);
         return *std::get_if<I>(&v);
     }
@@ -68,7 +68,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr auto& make_alternative_keep_flag(result<Variant
 namespace detail {
 // Tells the compiler that this point is never reached (a value out of range).
 ROBOWIRE_ALWAYS_INLINE constexpr void unreachable() noexcept {
-    if (std::is_constant_evaluated()) return;
+    if (ROBOWIRE_CONSTANT_EVALUATED()) return;
 #if defined(__GNUC__)
     __builtin_unreachable();
 #elif defined(_MSC_VER)
@@ -136,8 +136,7 @@ constexpr std::size_t index_of_key(std::uint8_t key) noexcept {
 // stores overwrite its member initialisers with no branch between and the
 // compiler drops them (see decode()).
 template <std::size_t I, std::size_t KeyOffset, bool Checked, class Variant>
-ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r,
-                                                         std::span<const std::uint8_t> in) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r, in_bytes in) noexcept {
     using A = std::variant_alternative_t<I, Variant>;
     if constexpr (!Checked)
         if (!input_ok<KeyOffset, A>(r, in)) return;
@@ -153,8 +152,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r,
     }
 }
 template <std::size_t KeyOffset, bool Checked, class Variant, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_index(result<Variant>& r, std::size_t index,
-                                                   std::span<const std::uint8_t> in,
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_index(result<Variant>& r, std::size_t index, in_bytes in,
                                                    std::index_sequence<I...>) noexcept {
     // false: no alternative has that index
     return ((index == I ? (decode_alternative<I, KeyOffset, Checked>(r, in), true) : false) || ...);
@@ -163,8 +161,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_index(result<Variant>& r, std::size
 // The same for a key's index from key_index_v: one more case for an unknown
 // key (variant_size), and no other value, so the jump table needs no range check.
 template <std::size_t KeyOffset, class Variant, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr void decode_key_index(result<Variant>& r, std::size_t index,
-                                                       std::span<const std::uint8_t> in,
+ROBOWIRE_ALWAYS_INLINE constexpr void decode_key_index(result<Variant>& r, std::size_t index, in_bytes in,
                                                        std::index_sequence<I...>) noexcept {
     (void)((index == I ? (decode_alternative<I, KeyOffset, false>(r, in), true) : false) || ... ||
            (index == sizeof...(I) ? (r = fail(errc::unknown_message, KeyOffset), true) : (unreachable(), false)));
@@ -184,11 +181,11 @@ struct size_limits<std::variant<M...>> {
 // The fixed bytes (but the key) and the length of alternative `index`, in
 // decode_into's order: code only for alternatives with other fixed bytes.
 template <class Variant, std::size_t KeyOffset, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr error check_alternative(std::size_t index, std::span<const std::uint8_t> in,
+ROBOWIRE_ALWAYS_INLINE constexpr error check_alternative(std::size_t index, in_bytes in,
                                                          std::index_sequence<I...>) noexcept {
     error e{};
     (void)(((fixed_count_v<std::variant_alternative_t<I, Variant>> > 1 && index == I)
-                ? (e = codec::check_fixed<std::variant_alternative_t<I, Variant>, KeyOffset>(
+                ? (e = fixed_error<std::variant_alternative_t<I, Variant>, KeyOffset>(
                        in, std::make_index_sequence<fixed_count_v<std::variant_alternative_t<I, Variant>>>{}),
                    true)
                 : false) ||
@@ -222,7 +219,7 @@ struct smallest_alternative<std::variant<M...>> {
 // inlined caller passes on by value is copied through the stack first).
 template <class Variant, std::size_t KeyOffset>
 ROBOWIRE_SPEED_INLINE constexpr result<Variant> decode_variant_at(const std::uint8_t* data, std::size_t size) noexcept {
-    const std::span<const std::uint8_t> in(data, size);
+    const in_bytes in(data, size);
     // Set on every path below: the decoded alternative is built in place
     // (nothing stored or cleared first); under ROBOWIRE_OPTIMIZE_SIZE it starts
     // as the smallest alternative, replaced below.

@@ -85,7 +85,7 @@ template <class T>
     static_assert(detail::is_wire_scalar_v<T>, "load_le: unsupported type");
     using U = typename detail::uint_of_size<sizeof(T)>::type;
     if constexpr (!detail::bytewise_v<T>) {
-        if (!std::is_constant_evaluated()) {  // one (possibly unaligned) load
+        if (!ROBOWIRE_CONSTANT_EVALUATED()) {  // one (possibly unaligned) load
             T v;
             std::memcpy(&v, p, sizeof(T));
             return v;
@@ -101,7 +101,7 @@ template <class T>
 constexpr void store_le(std::uint8_t* p, T v) noexcept {
     static_assert(detail::is_wire_scalar_v<T>, "store_le: unsupported type");
     if constexpr (!detail::bytewise_v<T>) {
-        if (!std::is_constant_evaluated()) {
+        if (!ROBOWIRE_CONSTANT_EVALUATED()) {
             std::memcpy(p, &v, sizeof(T));
             return;
         }

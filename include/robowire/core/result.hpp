@@ -276,10 +276,10 @@ public:
     // Turns this result into an error.
     constexpr result& operator=(robowire::error e) noexcept {
         if constexpr (in_value_) {
-            if (std::is_constant_evaluated()) *this = result(e);  // every byte set in a constant expression
+            if (ROBOWIRE_CONSTANT_EVALUATED()) *this = result(e);  // every byte set in a constant expression
             else detail::niche<T>::set_error(value_.v, e);
         } else {
-            if (std::is_constant_evaluated())
+            if (ROBOWIRE_CONSTANT_EVALUATED())
                 *this = result(e);  // a whole-object copy switches the active member in a constant expression
             else ::new (static_cast<void*>(&error_)) robowire::error(e);  // makes the error the active member
             ok_ = false;
@@ -350,14 +350,14 @@ private:
         const bool ok = has_value();
         if (ok == want_value) return;
         const robowire::error e = ok ? robowire::error{} : stored_error();
-        if (std::is_constant_evaluated()) detail::compile_time_bad_access(e.code);
+        if (ROBOWIRE_CONSTANT_EVALUATED()) detail::compile_time_bad_access(e.code);
         detail::bad_result_access(e);
     }
     struct cleared {};  // tag of holder's value-initialising constructor
     struct holder {     // default-initialises its value (value-initialising would clear it first)
         T v;
         constexpr explicit holder(std::in_place_t) noexcept(std::is_nothrow_default_constructible_v<T>) {
-            if (!std::is_constant_evaluated()) detail::run_time_only();
+            if (!ROBOWIRE_CONSTANT_EVALUATED()) detail::run_time_only();
         }
         // Value-initialised (cleared, then member initialisers): one block clear.
         constexpr explicit holder(cleared) noexcept(std::is_nothrow_default_constructible_v<T>) : v() {}
@@ -389,7 +389,7 @@ constexpr T& codec::unchecked_value(result<T>& r) noexcept {
 }
 template <class T, class A>
 constexpr T& detail::build_value(result<T>& r, const A& arg) noexcept {
-    if (std::is_constant_evaluated()) {
+    if (ROBOWIRE_CONSTANT_EVALUATED()) {
         r = result<T>(std::in_place, arg);  // a whole-object copy switches the active member
     } else {
         ::new (static_cast<void*>(&r.value_)) typename result<T>::holder(std::in_place, arg);
@@ -399,13 +399,13 @@ constexpr T& detail::build_value(result<T>& r, const A& arg) noexcept {
 }
 template <class T, class A>
 constexpr T& detail::build_value_keep_flag(result<T>& r, const A& arg) noexcept {
-    if (std::is_constant_evaluated()) return build_value(r, arg);
+    if (ROBOWIRE_CONSTANT_EVALUATED()) return build_value(r, arg);
     ::new (static_cast<void*>(&r.value_)) typename result<T>::holder(std::in_place, arg);
     return r.value_.v;
 }
 template <class T>
 constexpr T& detail::build_default(result<T>& r) noexcept {
-    if (std::is_constant_evaluated()) {
+    if (ROBOWIRE_CONSTANT_EVALUATED()) {
         r = result<T>(std::in_place);  // a whole-object copy switches the active member
     } else {
         ::new (static_cast<void*>(&r.value_)) typename result<T>::holder(std::in_place);
@@ -415,7 +415,7 @@ constexpr T& detail::build_default(result<T>& r) noexcept {
 }
 template <class T>
 constexpr T& detail::build_unset(result<T>& r) noexcept {
-    if (std::is_constant_evaluated()) return build_default(r);
+    if (ROBOWIRE_CONSTANT_EVALUATED()) return build_default(r);
     // memmove implicitly creates the (implicit-lifetime) holder in the storage; no store
     std::memmove(static_cast<void*>(&r.value_), static_cast<const void*>(&r.value_), sizeof(r.value_));
     r.set_ok();

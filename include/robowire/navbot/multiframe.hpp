@@ -80,7 +80,7 @@ private:
         out[2] = command_;
         out[3] = static_cast<std::uint8_t>(count - 1 - i);
         const std::size_t from = i * payload_size;
-        if (std::is_constant_evaluated() || ROBOWIRE_OPTIMIZE_SIZE) {
+        if (ROBOWIRE_CONSTANT_EVALUATED() || ROBOWIRE_OPTIMIZE_SIZE) {
             for (std::size_t k = 0; k < payload_size && from + k < payload_.size(); ++k)
                 out[5 + k] = static_cast<std::uint8_t>(payload_[from + k]);
         } else if (from + payload_size <= payload_.size()) {  // a whole frame's payload: a constant-size copy
@@ -266,7 +266,7 @@ private:
     constexpr result<reassembly> append(const frame& f) noexcept {
         // one fixed-size copy at run time, from `at` kept in a register (the copy's stores may alias size_)
         const std::size_t at = size_;
-        if (std::is_constant_evaluated() || ROBOWIRE_OPTIMIZE_SIZE) {
+        if (ROBOWIRE_CONSTANT_EVALUATED() || ROBOWIRE_OPTIMIZE_SIZE) {
             for (std::size_t i = 0; i < payload_size; ++i) buf_[at + i] = f.payload[i];
         } else {
             std::memcpy(buf_.data() + at, f.payload.data(), payload_size);

@@ -58,7 +58,7 @@ private:
 };
 // Makes d's frame *f, or none for nullptr, whatever it held (also nothing, after decode_result(unset_t)).
 constexpr void impl::set_frame(decode_result& d, const osp::frame* f) noexcept {
-    if (std::is_constant_evaluated()) {  // a whole-union copy makes the member the active one
+    if (ROBOWIRE_CONSTANT_EVALUATED()) {  // a whole-union copy makes the member the active one
         d.frame_ = f ? std::optional<osp::frame>(std::in_place, *f) : std::optional<osp::frame>();
     } else if (f) {  // in place, a store per byte (a 7-byte union copy calls memcpy at -Os)
         ::new (static_cast<void*>(&d.frame_.f)) std::optional<osp::frame>(std::in_place, *f);
@@ -68,7 +68,7 @@ constexpr void impl::set_frame(decode_result& d, const osp::frame* f) noexcept {
 }
 // Makes d hold a frame, whatever it held, and returns it, to be written in place.
 constexpr osp::frame& impl::frame_in_place(decode_result& d) noexcept {
-    if (std::is_constant_evaluated()) d.frame_ = std::optional<osp::frame>(std::in_place);
+    if (ROBOWIRE_CONSTANT_EVALUATED()) d.frame_ = std::optional<osp::frame>(std::in_place);
     else ::new (static_cast<void*>(&d.frame_.f)) std::optional<osp::frame>(std::in_place);
     return *d.frame_.f;
 }
@@ -212,7 +212,7 @@ template <bool FlagSet = false, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::span<const std::uint8_t> in,
                                                     std::index_sequence<I...> all) noexcept {
     if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
-        if (std::is_constant_evaluated()) {
+        if (ROBOWIRE_CONSTANT_EVALUATED()) {
             decode_by_key_chain(d, static_cast<std::uint16_t>(in[2] << 8 | in[3]), in, all);
         } else {  // the key's index by a loop over keys_v (in flash), then a dense switch on it
             const auto key = static_cast<std::uint16_t>(in[2] << 8 | in[3]);
@@ -333,7 +333,7 @@ constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) no
         return d;
     }
     if constexpr (!ROBOWIRE_OPTIMIZE_SIZE && frame_by_word) {  // one compare tree only (FlagSet)
-        if (std::size_t at = 0; !std::is_constant_evaluated() && (at = frame_word_offset<Message>()) != 0) {
+        if (std::size_t at = 0; !ROBOWIRE_CONSTANT_EVALUATED() && (at = frame_word_offset<Message>()) != 0) {
             // Bytes 1..8 (AA DEV CMD P1..P4 55, the markers checked) become
             // 01 DEV CMD P1..P4 01: result's flag, the frame and its flag, one store.
             std::uint64_t w;
@@ -343,11 +343,11 @@ constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) no
         } else {  // another layout, or a constant expression (where the message sets the flag)
             const osp::frame f{in[2], in[3], {in[4], in[5], in[6], in[7]}};
             set_frame(d, &f);
-            if (!std::is_constant_evaluated()) static_cast<result<message>&>(d) = result<message>(message{});
+            if (!ROBOWIRE_CONSTANT_EVALUATED()) static_cast<result<message>&>(d) = result<message>(message{});
         }
         decode_by_key<true>(d, in, std::make_index_sequence<std::variant_size_v<Message>>{});
     } else {
-        if (ROBOWIRE_OPTIMIZE_SIZE || std::is_constant_evaluated() || !frame_by_memcpy) {
+        if (ROBOWIRE_OPTIMIZE_SIZE || ROBOWIRE_CONSTANT_EVALUATED() || !frame_by_memcpy) {
             const osp::frame f{in[2], in[3], {in[4], in[5], in[6], in[7]}};
             set_frame(d, &f);
         } else {  // one wide copy, not six bytes

@@ -166,7 +166,7 @@ private:
     }
     // Index of the next start byte in p[from..n), or n.
     static constexpr std::size_t find_start(const std::uint8_t* p, std::size_t from, std::size_t n) noexcept {
-        if (!std::is_constant_evaluated()) {
+        if (!ROBOWIRE_CONSTANT_EVALUATED()) {
 #if ROBOWIRE_SSE2
             return find_start_sse2(p, from, n);
 #else
@@ -187,7 +187,7 @@ private:
         std::uint64_t bits = 0;  // bit k: p[base + k] is a start byte
         constexpr std::size_t next(std::size_t from) noexcept {
 #if ROBOWIRE_SSE2
-            if (!std::is_constant_evaluated() && n >= 64) {
+            if (!ROBOWIRE_CONSTANT_EVALUATED() && n >= 64) {
                 if (from - base < 64) {  // in the block of the last call
                     if (const std::uint64_t m = bits & (~std::uint64_t{0} << (from - base)); m != 0)
                         return base + first_bit(m);
@@ -243,7 +243,7 @@ private:
     }
 #endif
     static constexpr bool frame_at(const std::uint8_t* w) noexcept {  // the four markers, two words at run time
-        if (!std::is_constant_evaluated() &&
+        if (!ROBOWIRE_CONSTANT_EVALUATED() &&
             (std::endian::native == std::endian::little || std::endian::native == std::endian::big)) {
             return load2(w) == pair(start1, start2) && load2(w + 8) == pair(end1, end2);
         }
@@ -309,7 +309,7 @@ private:
     // 8 bytes in host order (lane k: the byte at p + k).
     static constexpr word_t load(const std::uint8_t* p) noexcept {
         word_t w = 0;
-        if (std::is_constant_evaluated()) {
+        if (ROBOWIRE_CONSTANT_EVALUATED()) {
             for (std::size_t k = 0; k < word; ++k)
                 w |= word_t{p[k]} << (std::endian::native == std::endian::little ? 8 * k : 56 - 8 * k);
         } else {

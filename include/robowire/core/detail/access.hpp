@@ -9,11 +9,42 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <span>
 #include <type_traits>
 
 #include "../table.hpp"
 
 namespace robowire::detail {
+
+// The codec's steps take bytes as these views rather than std::span: their
+// members are always inlined, so g++ folds each step where it is inlined
+// (a span's data() and size() stay calls inside always-inlined code).
+struct in_bytes {
+    const std::uint8_t* p = nullptr;
+    std::size_t n = 0;
+    template <std::size_t E>
+    ROBOWIRE_ALWAYS_INLINE constexpr in_bytes(std::span<const std::uint8_t, E> s) noexcept : p(s.data()), n(s.size()) {}
+    ROBOWIRE_ALWAYS_INLINE constexpr in_bytes(const std::uint8_t* data, std::size_t size) noexcept : p(data), n(size) {}
+    ROBOWIRE_ALWAYS_INLINE constexpr const std::uint8_t* data() const noexcept { return p; }
+    ROBOWIRE_ALWAYS_INLINE constexpr std::size_t size() const noexcept { return n; }
+    ROBOWIRE_ALWAYS_INLINE constexpr std::uint8_t operator[](std::size_t i) const noexcept { return p[i]; }
+    ROBOWIRE_ALWAYS_INLINE constexpr in_bytes first(std::size_t k) const noexcept { return {p, k}; }
+    ROBOWIRE_ALWAYS_INLINE constexpr in_bytes subspan(std::size_t off, std::size_t k) const noexcept {
+        return {p + off, k};
+    }
+    ROBOWIRE_ALWAYS_INLINE constexpr operator std::span<const std::uint8_t>() const noexcept { return {p, n}; }
+};
+struct out_bytes {
+    std::uint8_t* p = nullptr;
+    std::size_t n = 0;
+    template <std::size_t E>
+    ROBOWIRE_ALWAYS_INLINE constexpr out_bytes(std::span<std::uint8_t, E> s) noexcept : p(s.data()), n(s.size()) {}
+    ROBOWIRE_ALWAYS_INLINE constexpr out_bytes(std::uint8_t* data, std::size_t size) noexcept : p(data), n(size) {}
+    ROBOWIRE_ALWAYS_INLINE constexpr std::uint8_t* data() const noexcept { return p; }
+    ROBOWIRE_ALWAYS_INLINE constexpr std::size_t size() const noexcept { return n; }
+    ROBOWIRE_ALWAYS_INLINE constexpr std::uint8_t& operator[](std::size_t i) const noexcept { return p[i]; }
+    ROBOWIRE_ALWAYS_INLINE constexpr out_bytes first(std::size_t k) const noexcept { return {p, k}; }
+};
 
 // lo <= v <= hi, for a v known to lie in [full_lo, full_hi] (the decoder): in 32
 // bits when that range fits (on a 32-bit core a 64-bit compare is several
@@ -201,7 +232,7 @@ ROBOWIRE_ALWAYS_INLINE void copy_run(unsigned char* to, const unsigned char* fro
 #endif
     std::memcpy(to, from, n);
 }
-inline std::size_t offset_in(const void* object, const void* member) noexcept {
+ROBOWIRE_ALWAYS_INLINE std::size_t offset_in(const void* object, const void* member) noexcept {
     return static_cast<std::size_t>(static_cast<const unsigned char*>(member) -
                                     static_cast<const unsigned char*>(object));
 }

@@ -50,8 +50,7 @@ inline constexpr bool fresh_v = std::is_same_v<Err, fresh>;
 // A number, enum, bool or float of wire type W, valid in [Min, Max]: shared
 // by every field of the same kind and range (fewer functions to compile).
 template <class W, std::int64_t Min, std::int64_t Max, class E, class Err>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_scalar(E& v, std::span<const std::uint8_t> in, std::size_t off,
-                                                    Err& err) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_scalar(E& v, in_bytes in, std::size_t off, Err& err) noexcept {
     if constexpr (W::kind == wire_kind::f32le) {
         v = load_le<float>(in.data() + off);
         return true;
@@ -91,14 +90,14 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_scalar(E& v, std::span<const std::u
 // A text field of N bytes at `off`: its length (up to the first NUL), and
 // whether every byte after it is a NUL (else bad_padding at the first that is not).
 template <std::size_t N>
-ROBOWIRE_ALWAYS_INLINE constexpr std::size_t text_length(std::span<const std::uint8_t> in, std::size_t off) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr std::size_t text_length(in_bytes in, std::size_t off) noexcept {
     std::size_t len = 0;
     while (len < N && in[off + len] != 0) ++len;
     return len;
 }
 template <std::size_t N>
-ROBOWIRE_ALWAYS_INLINE constexpr bool text_padding_ok(std::span<const std::uint8_t> in, std::size_t off,
-                                                      std::size_t len, error& err) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr bool text_padding_ok(in_bytes in, std::size_t off, std::size_t len,
+                                                      error& err) noexcept {
     for (std::size_t i = len; i < N; ++i)
         if (in[off + i] != 0) [[unlikely]] {
             err = codec::fail_at(errc::bad_padding, off + i);
@@ -110,19 +109,18 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool text_padding_ok(std::span<const std::uint8
 // table.hpp) and valid range [Min, Max], not per field: fields of the same
 // kind, in any message, share them. `off` is the field's byte offset in `in`.
 template <class S, std::int64_t Min, std::int64_t Max, class E, class Err>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::uint8_t> in, std::size_t off,
-                                                     Err& err) noexcept;
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, in_bytes in, std::size_t off, Err& err) noexcept;
 
 template <class M, class Err, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, std::size_t base, Err& err,
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, in_bytes in, std::size_t base, Err& err,
                                                     std::index_sequence<I...>) noexcept;
 
 template <class S, std::int64_t Min, std::int64_t Max, class V, class Err, std::size_t... K>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_array(V& v, std::span<const std::uint8_t> in, std::size_t off, Err& err,
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_array(V& v, in_bytes in, std::size_t off, Err& err,
                                                    std::index_sequence<K...>) noexcept {
     constexpr std::size_t es = S::element_size;
     if constexpr (decode_in_loop<S>()) {
-        if (!std::is_constant_evaluated()) {  // one copy of the element's code, in a loop
+        if (!ROBOWIRE_CONSTANT_EVALUATED()) {  // one copy of the element's code, in a loop
             ROBOWIRE_NO_UNROLL
             for (std::size_t k = 0; k < sizeof...(K); ++k)
                 if (!decode_element<S, Min, Max>(v[k], in, off + k * es, err)) return false;
@@ -133,10 +131,9 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_array(V& v, std::span<const std::ui
 }
 
 template <class S, std::int64_t Min, std::int64_t Max, class V, class Err>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_value(V& v, std::span<const std::uint8_t> in, std::size_t off,
-                                                   Err& err) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_value(V& v, in_bytes in, std::size_t off, Err& err) noexcept {
     if constexpr (plain_byte_array_v<S, Min, Max>) {
-        if (!std::is_constant_evaluated()) {
+        if (!ROBOWIRE_CONSTANT_EVALUATED()) {
             std::memcpy(v.data(), in.data() + off, S::count);
             return true;
         }
@@ -146,8 +143,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_value(V& v, std::span<const std::ui
 }
 
 template <class S, std::int64_t Min, std::int64_t Max, class Err>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(typename S::member_type& member, std::span<const std::uint8_t> in,
-                                                   std::size_t off, Err& err) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(typename S::member_type& member, in_bytes in, std::size_t off,
+                                                   Err& err) noexcept {
     if constexpr (S::is_optional) {
         if (in.size() <= off) {
             if constexpr (!fresh_v<Err>) member.reset();
@@ -184,7 +181,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(typename S::member_type& memb
 #pragma GCC diagnostic ignored "-Warray-bounds"
 #pragma GCC diagnostic ignored "-Wstringop-overread"
 #endif
-ROBOWIRE_ALWAYS_INLINE void flush(unsigned char* obj, std::span<const std::uint8_t> in, const run& r) noexcept {
+ROBOWIRE_ALWAYS_INLINE void flush(unsigned char* obj, in_bytes in, const run& r) noexcept {
     if (r.size != 0) copy_run(obj + r.mem, in.data() + r.wire, r.size);
 }
 #if defined(__GNUC__) && !defined(__clang__)
@@ -192,8 +189,8 @@ ROBOWIRE_ALWAYS_INLINE void flush(unsigned char* obj, std::span<const std::uint8
 #endif
 // A field at byte `wire`: joins the current run, starts one, or is decoded on its own.
 template <class S, std::int64_t Min, std::int64_t Max>
-ROBOWIRE_ALWAYS_INLINE void copy_or_decode(unsigned char* obj, typename S::member_type& member,
-                                           std::span<const std::uint8_t> in, std::size_t wire, run& r) noexcept {
+ROBOWIRE_ALWAYS_INLINE void copy_or_decode(unsigned char* obj, typename S::member_type& member, in_bytes in,
+                                           std::size_t wire, run& r) noexcept {
     const std::size_t size = copy_size<S>(member);
     if (size != 0) {
         const std::size_t mem = offset_in(obj, &member);
@@ -240,9 +237,8 @@ constexpr bool unchecked_field() noexcept {
 // copy_or_decode for a pass that checks as it writes (one pass; its output is
 // discarded on an error, so a run left pending then is never copied).
 template <class S, std::int64_t Min, std::int64_t Max, class Err>
-ROBOWIRE_ALWAYS_INLINE bool copy_or_check(unsigned char* obj, typename S::member_type& member,
-                                          std::span<const std::uint8_t> in, std::size_t wire, run& r,
-                                          Err& err) noexcept {
+ROBOWIRE_ALWAYS_INLINE bool copy_or_check(unsigned char* obj, typename S::member_type& member, in_bytes in,
+                                          std::size_t wire, run& r, Err& err) noexcept {
     if constexpr (unchecked_field<S, Min, Max>()) {
         copy_or_decode<S, Min, Max>(obj, member, in, wire, r);
         return true;
@@ -254,11 +250,11 @@ ROBOWIRE_ALWAYS_INLINE bool copy_or_check(unsigned char* obj, typename S::member
 }
 
 template <class M, class Err, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::uint8_t> in, std::size_t base, Err& err,
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, in_bytes in, std::size_t base, Err& err,
                                                     std::index_sequence<I...>) noexcept {
     (void)m, (void)in, (void)base, (void)err;  // messages without fields
     if constexpr (!checks_v<Err> && ROBOWIRE_COPY_RUNS) {
-        if (!std::is_constant_evaluated()) {
+        if (!ROBOWIRE_CONSTANT_EVALUATED()) {
             const auto obj = reinterpret_cast<unsigned char*>(&m);
             run r{};
             (copy_or_decode<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(
@@ -268,7 +264,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::u
             return true;
         }
     } else if constexpr (ROBOWIRE_OPTIMIZE_SIZE && ROBOWIRE_COPY_RUNS) {  // one pass: unchecked fields copied
-        if (!std::is_constant_evaluated()) {
+        if (!ROBOWIRE_CONSTANT_EVALUATED()) {
             const auto obj = reinterpret_cast<unsigned char*>(&m);
             run r{};
             if (!(copy_or_check<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(
@@ -285,8 +281,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, std::span<const std::u
 }
 
 template <class S, std::int64_t Min, std::int64_t Max, class E, class Err>
-ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::uint8_t> in, std::size_t off,
-                                                     Err& err) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, in_bytes in, std::size_t off, Err& err) noexcept {
     using W = typename S::wire_type;
     if constexpr (W::kind == wire_kind::record) {
         if constexpr (ROBOWIRE_OPTIMIZE_SIZE || (!checks_v<Err> && ROBOWIRE_COPY_RUNS)) {  // in place
@@ -305,7 +300,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
         if constexpr (checks_v<Err>) {
             if (!text_padding_ok<n>(in, off, len, err)) return false;
         }
-        if (!std::is_constant_evaluated()) {  // straight from the input (char may view any bytes)
+        if (!ROBOWIRE_CONSTANT_EVALUATED()) {  // straight from the input (char may view any bytes)
             v.assign(std::string_view(reinterpret_cast<const char*>(in.data() + off), len));
             return true;
         }
@@ -326,11 +321,10 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, std::span<const std::
 // ---- check: the first error decode_record<M, error> would find, in the
 // same order, without writing anything.
 template <class M, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(std::span<const std::uint8_t> in, std::size_t base, error& err,
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(in_bytes in, std::size_t base, error& err,
                                                    std::index_sequence<I...>) noexcept;
 template <class S, std::int64_t Min, std::int64_t Max>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(std::span<const std::uint8_t> in, std::size_t off,
-                                                    error& err) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(in_bytes in, std::size_t off, error& err) noexcept {
     using E = typename S::element_type;
     using W = typename S::wire_type;
     if constexpr (W::kind == wire_kind::record) {
@@ -346,11 +340,11 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(std::span<const std::uint8_t
     }
 }
 template <class S, std::int64_t Min, std::int64_t Max, std::size_t... K>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_array(std::span<const std::uint8_t> in, std::size_t off, error& err,
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_array(in_bytes in, std::size_t off, error& err,
                                                   std::index_sequence<K...>) noexcept {
     constexpr std::size_t es = S::element_size;
     if constexpr (decode_in_loop<S>()) {
-        if (!std::is_constant_evaluated()) {
+        if (!ROBOWIRE_CONSTANT_EVALUATED()) {
             ROBOWIRE_NO_UNROLL
             for (std::size_t k = 0; k < sizeof...(K); ++k)
                 if (!check_element<S, Min, Max>(in, off + k * es, err)) return false;
@@ -360,8 +354,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_array(std::span<const std::uint8_t> 
     return (check_element<S, Min, Max>(in, off + K * es, err) && ...);
 }
 template <class S, std::int64_t Min, std::int64_t Max>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_field(std::span<const std::uint8_t> in, std::size_t off,
-                                                  error& err) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_field(in_bytes in, std::size_t off, error& err) noexcept {
     if constexpr (S::is_optional) {
         if (in.size() - (off + 1) < S::size - 1) [[unlikely]] {  // one compare: off < size < off + S::size
             err = codec::fail_at(errc::bad_length, off);
@@ -374,7 +367,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_field(std::span<const std::uint8_t> 
     else return check_element<S, Min, Max>(in, off, err);
 }
 template <class M, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(std::span<const std::uint8_t> in, std::size_t base, error& err,
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(in_bytes in, std::size_t base, error& err,
                                                    std::index_sequence<I...>) noexcept {
     (void)in, (void)base, (void)err;  // messages without fields
     return (check_field<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(
@@ -386,7 +379,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(std::span<const std::uint8_t>
 inline constexpr std::size_t no_offset = static_cast<std::size_t>(-1);
 // Is the fixed byte K of M (not the one at offset Skip) in `in` and wrong? Then e is its error.
 template <class M, std::size_t Skip, std::size_t K>
-ROBOWIRE_ALWAYS_INLINE constexpr bool fixed_wrong(std::span<const std::uint8_t> in, error& e) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr bool fixed_wrong(in_bytes in, error& e) noexcept {
     constexpr auto fixed = table_v<M>.fixed[K];
     if constexpr (fixed.offset == Skip) {
         return false;
@@ -403,5 +396,31 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool fixed_wrong(std::span<const std::uint8_t> 
         }
         return false;
     }
+}
+// codec::decode_fields: M's fields from an input whose fixed bytes and
+// length are checked; on an error nothing is written (one pass under
+// ROBOWIRE_OPTIMIZE_SIZE: the fields before the error may be).
+template <class M>
+ROBOWIRE_ALWAYS_INLINE constexpr error fields_into(M& out, in_bytes in) noexcept {
+    error err{};
+    constexpr std::size_t extent = table_v<M>.max_size();
+    const auto known = in.first(extent);
+    constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
+        (void)decode_record<M>(out, known, 0, err, fields);
+        return err;
+    }
+    if (!check_record<M>(known, 0, err, fields)) return err;
+    prechecked none{};
+    (void)decode_record<M>(out, known, 0, none, fields);
+    return err;
+}
+// The first fixed byte of M among K... (but the one at offset Skip) that `in`
+// has and gets wrong, as an error (code ok if none): codec::check_fixed.
+template <class M, std::size_t Skip, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE constexpr error fixed_error(in_bytes in, std::index_sequence<K...>) noexcept {
+    error e{};
+    (void)(fixed_wrong<M, Skip, K>(in, e) || ...);
+    return e;
 }
 }  // namespace robowire::detail::inline ROBOWIRE_MODE_NAMESPACE

@@ -60,7 +60,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_scalar(const E& v, std::size_t off, 
     }
 }
 template <class W, class E>
-ROBOWIRE_ALWAYS_INLINE constexpr void store_scalar(const E& v, std::span<std::uint8_t> out, std::size_t off) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr void store_scalar(const E& v, out_bytes out, std::size_t off) noexcept {
     if constexpr (W::kind == wire_kind::f32le) {
         store_le<float>(out.data() + off, v);
     } else {
@@ -92,7 +92,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_array(const V& v, std::size_t off, a
                                                   std::index_sequence<K...>) noexcept {
     constexpr std::size_t es = S::element_size;
     if constexpr (encode_in_loop<S>()) {
-        if (!std::is_constant_evaluated()) {
+        if (!ROBOWIRE_CONSTANT_EVALUATED()) {
             ROBOWIRE_NO_UNROLL
             for (std::size_t k = 0; k < sizeof...(K); ++k)
                 if (!check_element<S, Min, Max>(v[k], off + k * es, err)) return false;
@@ -152,18 +152,18 @@ template <class S, std::int64_t Min, std::int64_t Max>
 inline constexpr bool store_whole_v = plain_byte_array_v<S, Min, Max> || (!ROBOWIRE_OPTIMIZE_SIZE && byte_array_v<S>);
 
 template <class S, class E>
-ROBOWIRE_ALWAYS_INLINE constexpr void store_element(const E& v, std::span<std::uint8_t> out, std::size_t off) noexcept;
+ROBOWIRE_ALWAYS_INLINE constexpr void store_element(const E& v, out_bytes out, std::size_t off) noexcept;
 
 template <class M, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr void store_record(const M& m, std::span<std::uint8_t> out, std::size_t base,
+ROBOWIRE_ALWAYS_INLINE constexpr void store_record(const M& m, out_bytes out, std::size_t base,
                                                    std::index_sequence<I...>) noexcept;
 
 template <class S, class V, std::size_t... K>
-ROBOWIRE_ALWAYS_INLINE constexpr void store_array(const V& v, std::span<std::uint8_t> out, std::size_t off,
+ROBOWIRE_ALWAYS_INLINE constexpr void store_array(const V& v, out_bytes out, std::size_t off,
                                                   std::index_sequence<K...>) noexcept {
     constexpr std::size_t es = S::element_size;
     if constexpr (encode_in_loop<S>()) {
-        if (!std::is_constant_evaluated()) {
+        if (!ROBOWIRE_CONSTANT_EVALUATED()) {
             ROBOWIRE_NO_UNROLL
             for (std::size_t k = 0; k < sizeof...(K); ++k) store_element<S>(v[k], out, off + k * es);
             return;
@@ -173,9 +173,9 @@ ROBOWIRE_ALWAYS_INLINE constexpr void store_array(const V& v, std::span<std::uin
 }
 
 template <class S, bool Whole, class V>
-ROBOWIRE_ALWAYS_INLINE constexpr void store_value(const V& v, std::span<std::uint8_t> out, std::size_t off) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr void store_value(const V& v, out_bytes out, std::size_t off) noexcept {
     if constexpr (Whole) {
-        if (!std::is_constant_evaluated()) {
+        if (!ROBOWIRE_CONSTANT_EVALUATED()) {
             std::memcpy(out.data() + off, v.data(), S::count);
             return;
         }
@@ -185,7 +185,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr void store_value(const V& v, std::span<std::uin
 }
 
 template <class S, bool Whole>
-ROBOWIRE_ALWAYS_INLINE constexpr void store_field(const typename S::member_type& member, std::span<std::uint8_t> out,
+ROBOWIRE_ALWAYS_INLINE constexpr void store_field(const typename S::member_type& member, out_bytes out,
                                                   std::size_t off) noexcept {
     if constexpr (S::is_optional) {
         if (member) store_value<S, Whole>(*member, out, off);
@@ -198,13 +198,13 @@ ROBOWIRE_ALWAYS_INLINE constexpr void store_field(const typename S::member_type&
 
 // ---- runs (ROBOWIRE_COPY_RUNS; access.hpp), the encode side: a run is
 // copied from the object at `obj` into the output.
-ROBOWIRE_ALWAYS_INLINE void store_run(const unsigned char* obj, std::span<std::uint8_t> out, const run& r) noexcept {
+ROBOWIRE_ALWAYS_INLINE void store_run(const unsigned char* obj, out_bytes out, const run& r) noexcept {
     if (r.size != 0) copy_run(out.data() + r.wire, obj + r.mem, r.size);
 }
 // A field at byte `wire`: joins the current run, starts one, or is stored on its own.
 template <class S, bool Whole>
 ROBOWIRE_ALWAYS_INLINE void copy_or_store(const unsigned char* obj, const typename S::member_type& member,
-                                          std::span<std::uint8_t> out, std::size_t wire, run& r) noexcept {
+                                          out_bytes out, std::size_t wire, run& r) noexcept {
     const std::size_t size = copy_size<S>(member);
     if (size != 0) {
         const std::size_t mem = offset_in(obj, &member);
@@ -222,11 +222,11 @@ ROBOWIRE_ALWAYS_INLINE void copy_or_store(const unsigned char* obj, const typena
 }
 
 template <class M, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr void store_record(const M& m, std::span<std::uint8_t> out, std::size_t base,
+ROBOWIRE_ALWAYS_INLINE constexpr void store_record(const M& m, out_bytes out, std::size_t base,
                                                    std::index_sequence<I...>) noexcept {
     (void)m, (void)out, (void)base;  // messages without fields
     if constexpr (ROBOWIRE_COPY_RUNS) {
-        if (!std::is_constant_evaluated()) {
+        if (!ROBOWIRE_CONSTANT_EVALUATED()) {
             const auto obj = reinterpret_cast<const unsigned char*>(&m);
             run r{};
             (copy_or_store<shape_t<M, I>,
@@ -244,7 +244,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr void store_record(const M& m, std::span<std::ui
 
 // Writes one checked element.
 template <class S, class E>
-ROBOWIRE_ALWAYS_INLINE constexpr void store_element(const E& v, std::span<std::uint8_t> out, std::size_t off) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr void store_element(const E& v, out_bytes out, std::size_t off) noexcept {
     using W = typename S::wire_type;
     if constexpr (W::kind == wire_kind::record) {
         store_record<E>(v, out, off, std::make_index_sequence<field_count_v<E>>{});
@@ -263,7 +263,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr void store_element(const E& v, std::span<std::u
 // missing_field when an optional block is present but an earlier one is not.
 template <class M, std::size_t... I>
 constexpr result<std::size_t> encoded_size(const M& m, std::index_sequence<I...>) noexcept {
-    std::size_t size = table_v<M>.min_size();
+    std::size_t size = min_size_v<M>;
     std::size_t first_absent = 0;
     bool absent_seen = false;
     bool missing = false;
@@ -295,7 +295,7 @@ constexpr result<std::size_t> encoded_size(const M& m, std::index_sequence<I...>
 }
 
 template <class M, std::size_t... K>
-ROBOWIRE_ALWAYS_INLINE constexpr void write_fixed(std::span<std::uint8_t> out, std::index_sequence<K...>) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr void write_fixed(out_bytes out, std::index_sequence<K...>) noexcept {
     ((out[table_v<M>.fixed[K].offset] = table_v<M>.fixed[K].value), ...);
 }
 
@@ -337,12 +337,12 @@ inline constexpr auto cleared_offsets_v = [] {
 
 // Zeroes the cleared bytes that `out` has (one store per byte).
 template <class M, std::size_t... K>
-ROBOWIRE_ALWAYS_INLINE constexpr void clear_bytes(std::span<std::uint8_t> out, std::index_sequence<K...>) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr void clear_bytes(out_bytes out, std::index_sequence<K...>) noexcept {
     (void)out;
     ((cleared_offsets_v<M>[K] < out.size() ? (void)(out[cleared_offsets_v<M>[K]] = 0) : void()), ...);
 }
 template <class M>
-ROBOWIRE_ALWAYS_INLINE constexpr void clear_bytes(std::span<std::uint8_t> out) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr void clear_bytes(out_bytes out) noexcept {
     clear_bytes<M>(out, std::make_index_sequence<cleared_offsets_v<M>.size()>{});
 }
 
