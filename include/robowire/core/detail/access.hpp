@@ -29,10 +29,6 @@ struct in_bytes {
     ROBOWIRE_ALWAYS_INLINE constexpr std::size_t size() const noexcept { return n; }
     ROBOWIRE_ALWAYS_INLINE constexpr std::uint8_t operator[](std::size_t i) const noexcept { return p[i]; }
     ROBOWIRE_ALWAYS_INLINE constexpr in_bytes first(std::size_t k) const noexcept { return {p, k}; }
-    ROBOWIRE_ALWAYS_INLINE constexpr in_bytes subspan(std::size_t off, std::size_t k) const noexcept {
-        return {p + off, k};
-    }
-    ROBOWIRE_ALWAYS_INLINE constexpr operator std::span<const std::uint8_t>() const noexcept { return {p, n}; }
 };
 struct out_bytes {
     std::uint8_t* p = nullptr;

@@ -311,7 +311,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_element(E& v, in_bytes in, std::siz
     } else if constexpr (W::kind == wire_kind::tail) {
         const std::size_t end = in.size() < off + S::size ? in.size() : off + S::size;
         v.clear();
-        (void)v.append(in.subspan(off, end > off ? end - off : 0));
+        (void)v.append(std::span<const std::uint8_t>(in.data() + off, end > off ? end - off : 0));
         return true;
     } else {
         return decode_scalar<W, Min, Max>(v, in, off, err);
