@@ -26,6 +26,15 @@
 
 namespace robowire {
 
+// One fuzz dictionary entry (fuzz_dictionary_v, below): bytes that a
+// message's table fixes at consecutive offsets (markers, command bytes), 1..16 of them.
+struct fuzz_token {
+    std::uint8_t bytes[16];
+    std::uint8_t size;
+
+    constexpr std::span<const std::uint8_t> view() const noexcept { return {bytes, size}; }
+};
+
 // ---------------------------------------------------------------- alternatives
 // Calls fn(std::type_identity<M>{}) for every alternative M of Variant, in order.
 template <class Variant, class Fn>

@@ -37,16 +37,6 @@ ROBOWIRE_ALWAYS_INLINE constexpr error check_fixed(std::span<const std::uint8_t>
     return detail::fixed_error<M, Skip>(in, fixed);
 }
 
-// M's fields from `in`, without the fixed-byte and length checks: for
-// dispatchers that have checked both already (`in` holds at least
-// max_size_v<M> bytes). Returns the first field error, or errc::ok.
-// On an error, nothing is written to `out` (under ROBOWIRE_OPTIMIZE_SIZE, in
-// one pass with less code, the fields before the error may be: for an
-// output that is discarded on an error, such as a dispatcher's result).
-template <described M>
-ROBOWIRE_ALWAYS_INLINE constexpr error decode_fields(M& out, std::span<const std::uint8_t> in) noexcept {
-    return detail::fields_into(out, detail::in_bytes(in));
-}
 }  // namespace codec::inline ROBOWIRE_MODE_NAMESPACE
 
 namespace detail::inline ROBOWIRE_MODE_NAMESPACE {
@@ -100,6 +90,22 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, in_bytes in) noexcept
     write_body(out, in);
     return {};
 }
+}  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE
+
+namespace codec::inline ROBOWIRE_MODE_NAMESPACE {
+// M's fields from `in`, without the fixed-byte and length checks: for
+// dispatchers that have checked both already (`in` holds at least
+// max_size_v<M> bytes). Returns the first field error, or errc::ok.
+// On an error, nothing is written to `out` (under ROBOWIRE_OPTIMIZE_SIZE, in
+// one pass with less code, the fields before the error may be: for an
+// output that is discarded on an error, such as a dispatcher's result).
+template <described M>
+ROBOWIRE_ALWAYS_INLINE constexpr error decode_fields(M& out, std::span<const std::uint8_t> in) noexcept {
+    return detail::decode_body<M, ROBOWIRE_OPTIMIZE_SIZE>(out, detail::in_bytes(in.data(), max_size_v<M>));
+}
+}  // namespace codec::inline ROBOWIRE_MODE_NAMESPACE
+
+namespace detail::inline ROBOWIRE_MODE_NAMESPACE {
 // The error of an input that fails input_ok's test: the first wrong fixed
 // byte `in` has, else the length's. Out of line (the good path sets up no error).
 template <std::size_t Known, class M>

@@ -6,7 +6,6 @@
 #include "config.hpp"  // first: the C++ version check
 
 #include <cstddef>
-#include <cstdint>
 #include <span>
 #include <string_view>
 #include <type_traits>
@@ -34,15 +33,6 @@ struct characteristic {
     uuid128 uuid;
     gatt_direction carries;
     std::string_view label;  // e.g. "NAVBOT write characteristic"
-};
-
-// One fuzz dictionary entry (fuzz_dictionary_v, reflect.hpp): bytes that a
-// message's table fixes at consecutive offsets (markers, command bytes), 1..16 of them.
-struct fuzz_token {
-    std::uint8_t bytes[16];
-    std::uint8_t size;
-
-    constexpr std::span<const std::uint8_t> view() const noexcept { return {bytes, size}; }
 };
 
 // A protocol's message variants by direction (types cannot sit in the

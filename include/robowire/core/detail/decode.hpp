@@ -397,24 +397,6 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool fixed_wrong(in_bytes in, error& e) noexcep
         return false;
     }
 }
-// codec::decode_fields: M's fields from an input whose fixed bytes and
-// length are checked; on an error nothing is written (one pass under
-// ROBOWIRE_OPTIMIZE_SIZE: the fields before the error may be).
-template <class M>
-ROBOWIRE_ALWAYS_INLINE constexpr error fields_into(M& out, in_bytes in) noexcept {
-    error err{};
-    constexpr std::size_t extent = table_v<M>.max_size();
-    const auto known = in.first(extent);
-    constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
-    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
-        (void)decode_record<M>(out, known, 0, err, fields);
-        return err;
-    }
-    if (!check_record<M>(known, 0, err, fields)) return err;
-    prechecked none{};
-    (void)decode_record<M>(out, known, 0, none, fields);
-    return err;
-}
 // The first fixed byte of M among K... (but the one at offset Skip) that `in`
 // has and gets wrong, as an error (code ok if none): codec::check_fixed.
 template <class M, std::size_t Skip, std::size_t... K>
