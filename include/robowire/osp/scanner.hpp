@@ -185,7 +185,7 @@ private:
         std::size_t n;
         std::size_t base = n;    // bits covers p[base, base + 64); none yet
         std::uint64_t bits = 0;  // bit k: p[base + k] is a start byte
-        constexpr std::size_t next(std::size_t from) noexcept {
+        ROBOWIRE_ALWAYS_INLINE constexpr std::size_t next(std::size_t from) noexcept {
 #if ROBOWIRE_SSE2
             if (!ROBOWIRE_CONSTANT_EVALUATED() && n >= 64) {
                 if (from - base < 64) {  // in the block of the last call
@@ -193,19 +193,9 @@ private:
                         return base + first_bit(m);
                     from = base + 64;
                 }
-                for (; from <= n - 64; from += 64) {
-                    const v16 a = load16(p + from), b = load16(p + from + 16), c = load16(p + from + 32),
-                              d = load16(p + from + 48);
-                    if (start_lanes(max16(max16(a, b), max16(c, d))) != 0) {
-                        base = from;
-                        bits = lanes64(a, b, c, d);
-                        return from + first_bit(bits);
-                    }
-                }
-                if (from >= n) return n;
-                base = n - 64;  // the last 64 bytes, from on
-                bits = lanes64(load16(p + base), load16(p + base + 16), load16(p + base + 32), load16(p + base + 48)) &
-                       (~std::uint64_t{0} << (from - base));
+                const block b = find_block(p, from, n);  // a value: the state stays in registers
+                base = b.base;
+                bits = b.bits;
                 return bits != 0 ? base + first_bit(bits) : n;
             }
 #endif
@@ -213,6 +203,22 @@ private:
         }
     };
 #if ROBOWIRE_SSE2
+    struct block {
+        std::size_t base;    // bits covers p[base, base + 64)
+        std::uint64_t bits;  // bit k: p[base + k] is a start byte; 0: none from `from` to n
+    };
+    // The first 64 bytes from `from` (n >= 64) that hold a start byte, as a mask.
+    static block find_block(const std::uint8_t* p, std::size_t from, std::size_t n) noexcept {
+        for (; from <= n - 64; from += 64) {
+            const v16 a = load16(p + from), b = load16(p + from + 16), c = load16(p + from + 32),
+                      d = load16(p + from + 48);
+            if (start_lanes(max16(max16(a, b), max16(c, d))) != 0) return {from, lanes64(a, b, c, d)};
+        }
+        if (from >= n) return {n, 0};
+        const std::size_t base = n - 64;  // the last 64 bytes, from on
+        return {base, lanes64(load16(p + base), load16(p + base + 16), load16(p + base + 32), load16(p + base + 48)) &
+                          (~std::uint64_t{0} << (from - base))};
+    }
     // SSE2 (inline; no call per start byte as with memchr).
     using v16 = unsigned char __attribute__((vector_size(16)));
     static v16 load16(const std::uint8_t* p) noexcept {
