@@ -9,7 +9,7 @@ namespace bw = robowire::buwizz3;
 ENTRY void buwizz3_decode_status(std::span<const std::uint8_t> b) {
     const auto s = robowire::decode<bw::status>(b);
     if (s) out(std::span(reinterpret_cast<const std::uint8_t*>(&*s), sizeof(bw::status)));  // every field
-    else sink = static_cast<std::uint32_t>(s.code());
+    else sink = static_cast<std::uint32_t>(s.code()) | std::uint32_t{s.error().offset} << 8;  // as hw::report
 }
 
 int main() {

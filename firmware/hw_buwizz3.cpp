@@ -1,5 +1,7 @@
 // Hand-written baseline for buwizz3.cpp: every command decoded and encoded,
 // every notification decoded, the 0x31 drive command built from values.
+// Written for size on a little-endian core: where a command's wire fields are
+// a run of struct members (the offsets static_asserted), one fixed-size copy.
 #include "handwritten.hpp"
 
 namespace {
@@ -21,6 +23,10 @@ struct command {
         struct { std::uint8_t port; float f[8]; std::int8_t lim_out, db, boost; std::uint8_t mode; } pid;
     };
 };
+// The runs copied below: wire bytes [a, b) are the members from the named one on.
+static_assert(sizeof(command::motor) == 8 && sizeof(command::motor_ext) == 20, "0x30: wire 1..8, 0x31: wire 1..20");
+static_assert(sizeof(command::pid) == 40, "0x53: f[8] .. mode are wire 2..37");
+static_assert(sizeof(command::wakeup) == 12, "0x21: idle, sleep are wire 2..9");
 bool valid_function(std::uint8_t f) { return f == 0 || f == 0x10 || (f >= 0x14 && f <= 0x16); }
 bool valid_lpf(std::uint8_t v) { return v <= 3 || (v >= 8 && v <= 11); }
 // The wire length of each command (0: unknown; 0x36 has three).
@@ -50,8 +56,10 @@ HW_CODEC hw::error decode_command(const std::uint8_t* p, std::size_t n, command&
     c.kind = p[0];
     const std::size_t want = wire_size(p[0]);
     if (want == 0) return hw::fail(hw::unknown_message, 0);
+    if (p[0] == 0x40 && n > 1 && p[1] != 0x10) return hw::fail(hw::bad_command, 1);  // fixed bytes, then the length
     if (p[0] == 0x36) {
-        if (n != 1 && n != 13 && n != 17) return n > 17 ? hw::fail(hw::too_long, 17) : hw::fail(hw::bad_length, n);
+        if (n != 1 && n != 13 && n != 17)  // bad_length at the first byte past the last whole form
+            return n > 17 ? hw::fail(hw::too_long, 17) : hw::fail(hw::bad_length, n < 13 ? 1 : 13);
     } else if (auto e = hw::length(n, want); e.code) {
         return e;
     }
@@ -66,23 +74,17 @@ HW_CODEC hw::error decode_command(const std::uint8_t* p, std::size_t n, command&
     }
     case 0x21:
         if (p[1] > 1) return hw::fail(hw::value_out_of_range, 1);
-        c.wakeup = {p[1], hw::rd32(p + 2), hw::rd32(p + 6)};
+        c.wakeup.enabled = p[1];
+        std::memcpy(&c.wakeup.idle, p + 2, 8);
         return c.wakeup.idle >= 10 ? hw::good : hw::fail(hw::value_out_of_range, 2);
-    case 0x22:
-        for (std::size_t i = 0; i < 6; ++i) c.factors[i] = hw::rdf(p + 1 + 4 * i);
-        return hw::good;
+    case 0x22: std::memcpy(c.factors, p + 1, 24); return hw::good;
     case 0x23: case 0xA1: case 0xAC: return hw::good;
     case 0x30:
-        std::memcpy(c.motor.power, p + 1, 6);
-        c.motor.brake = p[7];
-        c.motor.lut = p[8];
+        std::memcpy(&c.motor, p + 1, 8);
         if (auto e = check_power(c.motor.power, 6, 1); e.code) return e;
         return check_flags(p[7], p[8], 7);
     case 0x31:
-        for (std::size_t i = 0; i < 4; ++i) c.motor_ext.ref[i] = static_cast<std::int32_t>(hw::rd32(p + 1 + 4 * i));
-        std::memcpy(c.motor_ext.power, p + 17, 2);
-        c.motor_ext.brake = p[19];
-        c.motor_ext.lut = p[20];
+        std::memcpy(&c.motor_ext, p + 1, 20);
         if (auto e = check_power(c.motor_ext.power, 2, 17); e.code) return e;
         return check_flags(p[19], p[20], 19);
     case 0x32: c.one = p[1]; return p[1] >= 20 ? hw::good : hw::fail(hw::value_out_of_range, 1);
@@ -103,8 +105,8 @@ HW_CODEC hw::error decode_command(const std::uint8_t* p, std::size_t n, command&
     case 0x37: c.one = p[1]; return valid_lpf(p[1]) ? hw::good : hw::fail(hw::invalid_enum, 1);
     case 0x38: std::memcpy(c.limits, p + 1, 6); return hw::good;
     case 0x40:
-        if (p[1] != 0x10) return hw::fail(hw::bad_command, 1);
-        c.uart = {p[2], hw::rd32(p + 3)};
+        c.uart.channel = p[2];
+        std::memcpy(&c.uart.baud, p + 3, 4);
         return hw::good;
     case 0x50:
         for (std::size_t i = 0; i < 4; ++i) {
@@ -113,17 +115,11 @@ HW_CODEC hw::error decode_command(const std::uint8_t* p, std::size_t n, command&
         }
         return hw::good;
     case 0x51: c.one = p[1]; return p[1] <= 4 ? hw::good : hw::fail(hw::value_out_of_range, 1);
-    case 0x52:
-        for (std::size_t i = 0; i < 4; ++i) c.reference[i] = static_cast<std::int32_t>(hw::rd32(p + 1 + 4 * i));
-        return hw::good;
+    case 0x52: std::memcpy(c.reference, p + 1, 16); return hw::good;
     case 0x53:
         if (p[1] > 3) return hw::fail(hw::value_out_of_range, 1);
         c.pid.port = p[1];
-        for (std::size_t i = 0; i < 8; ++i) c.pid.f[i] = hw::rdf(p + 2 + 4 * i);
-        c.pid.lim_out = static_cast<std::int8_t>(p[34]);
-        c.pid.db = static_cast<std::int8_t>(p[35]);
-        c.pid.boost = static_cast<std::int8_t>(p[36]);
-        c.pid.mode = p[37];
+        std::memcpy(c.pid.f, p + 2, 36);
         if (c.pid.lim_out < 1) return hw::fail(hw::value_out_of_range, 34);
         if (c.pid.db < 0) return hw::fail(hw::value_out_of_range, 35);
         if (c.pid.boost < 0) return hw::fail(hw::value_out_of_range, 36);
@@ -173,15 +169,10 @@ HW_CODEC std::size_t encode_command(const command& c, std::uint8_t* out, hw::err
         std::memset(out + 1 + len, 0, 12 - len);
         break;
     }
-    case 0x21: out[1] = c.wakeup.enabled; hw::wr32(out + 2, c.wakeup.idle); hw::wr32(out + 6, c.wakeup.sleep); break;
-    case 0x22: for (std::size_t i = 0; i < 6; ++i) hw::wrf(out + 1 + 4 * i, c.factors[i]); break;
-    case 0x30: std::memcpy(out + 1, c.motor.power, 6); out[7] = c.motor.brake; out[8] = c.motor.lut; break;
-    case 0x31:
-        for (std::size_t i = 0; i < 4; ++i) hw::wr32(out + 1 + 4 * i, static_cast<std::uint32_t>(c.motor_ext.ref[i]));
-        std::memcpy(out + 17, c.motor_ext.power, 2);
-        out[19] = c.motor_ext.brake;
-        out[20] = c.motor_ext.lut;
-        break;
+    case 0x21: out[1] = c.wakeup.enabled; std::memcpy(out + 2, &c.wakeup.idle, 8); break;
+    case 0x22: std::memcpy(out + 1, c.factors, 24); break;
+    case 0x30: std::memcpy(out + 1, &c.motor, 8); break;
+    case 0x31: std::memcpy(out + 1, &c.motor_ext, 20); break;
     case 0x32: case 0x34: case 0x35: case 0x37: case 0x51: out[1] = c.one; break;
     case 0x33: std::memcpy(out + 1, c.ramps, 12); break;
     case 0x36:
@@ -191,32 +182,29 @@ HW_CODEC std::size_t encode_command(const command& c, std::uint8_t* out, hw::err
                 out[13 + i] = static_cast<std::uint8_t>(c.led.frequency_hz[i] << 4 | c.led.duty[i]);
         break;
     case 0x38: std::memcpy(out + 1, c.limits, 6); break;
-    case 0x40: out[1] = 0x10; out[2] = c.uart.channel; hw::wr32(out + 3, c.uart.baud); break;
+    case 0x40: out[1] = 0x10; out[2] = c.uart.channel; std::memcpy(out + 3, &c.uart.baud, 4); break;
     case 0x50: std::memcpy(out + 1, c.functions, 4); break;
-    case 0x52: for (std::size_t i = 0; i < 4; ++i) hw::wr32(out + 1 + 4 * i, static_cast<std::uint32_t>(c.reference[i])); break;
-    case 0x53:
-        out[1] = c.pid.port;
-        for (std::size_t i = 0; i < 8; ++i) hw::wrf(out + 2 + 4 * i, c.pid.f[i]);
-        out[34] = static_cast<std::uint8_t>(c.pid.lim_out);
-        out[35] = static_cast<std::uint8_t>(c.pid.db);
-        out[36] = static_cast<std::uint8_t>(c.pid.boost);
-        out[37] = c.pid.mode;
-        break;
+    case 0x52: std::memcpy(out + 1, c.reference, 16); break;
+    case 0x53: out[1] = c.pid.port; std::memcpy(out + 2, c.pid.f, 36); break;
     default: break;
     }
     return n;
 }
 
-struct status {
-    std::uint8_t flags, battery, current[6], temperature;
-    std::int16_t accel[3];
-    std::uint8_t bl_command, bl_code, bl_data[3], charge;
+struct status {  // laid out as hw_buwizz3_status.cpp's
+    std::uint8_t flags, battery, current[6], temperature;  // wire 1..9
+    std::int16_t accel[3];                                 // wire 10..15
+    std::uint8_t bl_command, bl_code, bl_data[3], charge;  // wire 16..21
     struct { std::uint8_t type; std::int8_t velocity; std::int16_t absolute; std::int32_t position; } motors[4];
     bool has_pid;
-    float process_value, error, output;
+    float process_value, error, output;  // wire 54..65
     std::int8_t integrator, motor_output;
-    std::uint8_t ignored;
+    std::uint32_t ignored;
 };
+static_assert(offsetof(status, temperature) == 8 && offsetof(status, accel) == 10 &&
+              offsetof(status, charge) == 21 && sizeof(status::motors) == 32 &&
+              offsetof(status, motor_output) - offsetof(status, process_value) == 13,
+              "each status copy below is a run of members");
 struct notification {
     std::uint8_t kind;
     union {
@@ -226,32 +214,15 @@ struct notification {
     };
 };
 HW_CODEC hw::error decode_status(const std::uint8_t* p, std::size_t n, status& s) {
-    if (n < 54) return hw::fail(hw::too_short, n);
+    if (n < 54) return hw::fail(hw::too_short, n);  // p[0] is 0x01 (the caller's switch)
     if (n > 129) return hw::fail(hw::too_long, 129);
-    if (n > 54 && n < 68) return hw::fail(hw::bad_length, n);
-    s.flags = p[1];
-    s.battery = p[2];
-    std::memcpy(s.current, p + 3, 6);
-    s.temperature = p[9];
-    for (std::size_t i = 0; i < 3; ++i) s.accel[i] = static_cast<std::int16_t>(hw::rd16(p + 10 + 2 * i));
-    s.bl_command = p[16];
-    s.bl_code = p[17];
-    std::memcpy(s.bl_data, p + 18, 3);
-    s.charge = p[21];
-    for (std::size_t i = 0; i < 4; ++i) {
-        const std::uint8_t* m = p + 22 + 8 * i;
-        s.motors[i] = {m[0], static_cast<std::int8_t>(m[1]), static_cast<std::int16_t>(hw::rd16(m + 2)),
-                       static_cast<std::int32_t>(hw::rd32(m + 4))};
-    }
+    if (n > 54 && n < 68) return hw::fail(hw::bad_length, 54);  // bytes past the short form
+    std::memcpy(&s.flags, p + 1, 9);   // flags .. temperature
+    std::memcpy(s.accel, p + 10, 12);  // accel .. charge
+    std::memcpy(s.motors, p + 22, 32);
     s.has_pid = n >= 68;
-    if (s.has_pid) {
-        s.process_value = hw::rdf(p + 54);
-        s.error = hw::rdf(p + 58);
-        s.output = hw::rdf(p + 62);
-        s.integrator = static_cast<std::int8_t>(p[66]);
-        s.motor_output = static_cast<std::int8_t>(p[67]);
-    }
-    s.ignored = static_cast<std::uint8_t>(n > 68 ? n - 68 : 0);
+    if (s.has_pid) std::memcpy(&s.process_value, p + 54, 14);
+    s.ignored = static_cast<std::uint32_t>(n > 68 ? n - 68 : 0);
     return hw::good;
 }
 HW_CODEC hw::error decode_notification(const std::uint8_t* p, std::size_t n, notification& m) {
@@ -261,7 +232,7 @@ HW_CODEC hw::error decode_notification(const std::uint8_t* p, std::size_t n, not
     case 0x01: return decode_status(p, n, m.s);
     case 0x23:
         if (auto e = hw::length(n, 25); e.code) return e;
-        for (std::size_t i = 0; i < 6; ++i) m.factors[i] = hw::rdf(p + 1 + 4 * i);
+        std::memcpy(m.factors, p + 1, 24);
         return hw::good;
     case 0xAC:
         if (n > 129) return hw::fail(hw::too_long, 129);

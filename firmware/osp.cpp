@@ -5,9 +5,9 @@
 
 namespace osp = robowire::osp;
 
-#if defined(__arm__)
+#if defined(__arm__) || defined(__riscv)
 static_assert(ROBOWIRE_OPTIMIZE_SIZE == 1 && ROBOWIRE_ARRAY_LOOPS == 1 && ROBOWIRE_COPY_RUNS == 1,
-              "docs/footprint.md states these settings for -Os on both Cortex-M cores");
+              "docs/footprint.md states these settings for -Os on both Cortex-M cores and rv32imc");
 #endif
 
 ENTRY void osp_decode(std::span<const std::uint8_t> b) {

@@ -132,14 +132,16 @@
 // are their members' bytes at once (one memcpy of a constant size). Default 1
 // on little-endian targets that load unaligned words (x86, AArch64, ARMv7-M
 // and later, WebAssembly), and under ROBOWIRE_OPTIMIZE_SIZE on the other
-// little-endian Arm cores (Cortex-M0/M0+: runs of up to 4 bytes copied byte by
-// byte, longer ones by memcpy; less code than field by field); else 0 (field
-// by field, no library memcpy linked). Results are the same either way; define
-// it alike in every file of a program.
+// little-endian Arm and RISC-V cores (Cortex-M0/M0+, RV32: runs of up to 4
+// bytes copied byte by byte, longer ones by memcpy; less code than field by
+// field); else 0 (field by field, no library memcpy linked). Results are the
+// same either way; define it alike in every file of a program.
 #ifndef ROBOWIRE_COPY_RUNS
 #if defined(__x86_64__) || defined(__i386__) || defined(_M_X64) || defined(_M_IX86) || defined(__aarch64__) || \
     defined(_M_ARM64) || defined(__ARM_FEATURE_UNALIGNED) || defined(__wasm__) ||                              \
-    (ROBOWIRE_OPTIMIZE_SIZE && defined(__arm__) && defined(__ARMEL__))
+    (ROBOWIRE_OPTIMIZE_SIZE && defined(__arm__) && defined(__ARMEL__)) ||                                      \
+    (ROBOWIRE_OPTIMIZE_SIZE && defined(__riscv) && defined(__BYTE_ORDER__) &&                                  \
+     __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__)
 #define ROBOWIRE_COPY_RUNS 1
 #else
 #define ROBOWIRE_COPY_RUNS 0

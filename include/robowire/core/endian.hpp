@@ -59,10 +59,14 @@ struct uint_of_size<4> {
 
 // At run time: memcpy (one wide load or store where the core allows
 // unaligned access), except 16-bit values on cores without unaligned access
-// (Cortex-M0/M0+), where two byte accesses are smaller than a memcpy call.
+// (Cortex-M0/M0+, RV32 without fast unaligned access), where two byte loads and
+// a shift are smaller than a memcpy call or a copy through the stack.
 template <class T>
 inline constexpr bool bytewise_v =
 #if defined(__arm__) && !defined(__ARM_FEATURE_UNALIGNED)
+    sizeof(T) == 2 ||
+#endif
+#if defined(__riscv) && !defined(__riscv_misaligned_fast)
     sizeof(T) == 2 ||
 #endif
     std::endian::native != std::endian::little;

@@ -217,10 +217,10 @@ struct run {
     std::size_t wire = 0, mem = 0, size = 0;  // byte offsets in the input and in the object; 0: no run
 };
 // Copies a run of n bytes (a constant once inlined). Where words cannot be
-// loaded unaligned (Cortex-M0+), a short run byte by byte: a few loads and
+// loaded unaligned (Cortex-M0+, RV32), a short run byte by byte: a few loads and
 // stores instead of a library call.
 ROBOWIRE_ALWAYS_INLINE void copy_run(unsigned char* to, const unsigned char* from, std::size_t n) noexcept {
-#if defined(__arm__) && !defined(__ARM_FEATURE_UNALIGNED)
+#if (defined(__arm__) && !defined(__ARM_FEATURE_UNALIGNED)) || (defined(__riscv) && !defined(__riscv_misaligned_fast))
     if (n <= 4) {
         for (std::size_t k = 0; k < n; ++k) to[k] = from[k];
         return;
