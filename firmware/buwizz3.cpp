@@ -22,9 +22,12 @@ ENTRY void buwizz3_encode_command(std::span<const std::uint8_t> b) {
     if (w) out(*w);
 }
 ENTRY void buwizz3_encode_drive(std::span<const std::uint8_t> b) {
+    // every field from the input (an app's values: checked by encode)
     bw::set_motor_data_extended m{};
     for (std::size_t i = 0; i < 4; ++i) m.reference[i] = static_cast<std::int32_t>(b[i] * 1000);
-    m.power = {static_cast<std::int8_t>(b[4] & 0x7F), static_cast<std::int8_t>(b[5] & 0x7F)};
+    m.power = {static_cast<std::int8_t>(b[4]), static_cast<std::int8_t>(b[5])};
+    m.brake_flags = b[6];
+    m.lut_disable_flags = b[7];
     const auto w = robowire::encode(m);
     if (w) out(*w);
 }

@@ -265,9 +265,10 @@ ENTRY void hw_buwizz3_encode_drive(const std::uint8_t* b) {
     command c;
     c.kind = 0x31;
     for (std::size_t i = 0; i < 4; ++i) c.motor_ext.ref[i] = static_cast<std::int32_t>(b[i] * 1000);
-    c.motor_ext.power[0] = static_cast<std::int8_t>(b[4] & 0x7F);
-    c.motor_ext.power[1] = static_cast<std::int8_t>(b[5] & 0x7F);
-    c.motor_ext.brake = c.motor_ext.lut = 0;
+    c.motor_ext.power[0] = static_cast<std::int8_t>(b[4]);  // every field from the input, as buwizz3.cpp
+    c.motor_ext.power[1] = static_cast<std::int8_t>(b[5]);
+    c.motor_ext.brake = b[6];
+    c.motor_ext.lut = b[7];
     std::uint8_t out[38];
     hw::error e;
     if (const std::size_t k = encode_command(c, out, e)) hw::out(out, k);

@@ -14,6 +14,7 @@ struct frame {
     std::uint8_t command, remaining;
     std::uint8_t payload[15];
 };
+static_assert(sizeof(maneuver) == 10, "the maneuver's members are wire bytes 5..14, in order");
 bool in(int v, int lo, int hi) { return v >= lo && v <= hi; }
 // Signed channels: byte offsets 5, 7, 8, 13, 14.
 bool is_signed(std::size_t i) { return i == 5 || i == 7 || i == 8 || i == 13 || i == 14; }
@@ -35,38 +36,37 @@ HW_CODEC hw::error encode(const maneuver& m, bool sign_magnitude, std::uint8_t* 
     if (auto e = check(m); e.code) return e;
     std::memset(out, 0, 20);
     out[0] = 0x55; out[1] = 0xAA; out[2] = 0x10;
-    out[5] = static_cast<std::uint8_t>(m.roll);
-    out[6] = m.height;
-    out[7] = static_cast<std::uint8_t>(m.pitch);
-    out[8] = static_cast<std::uint8_t>(m.yaw);
-    out[9] = m.switch_a; out[10] = m.switch_b; out[11] = m.switch_c; out[12] = m.switch_d;
-    out[13] = static_cast<std::uint8_t>(m.ball_x);
-    out[14] = static_cast<std::uint8_t>(m.ball_y);
+    std::memcpy(out + 5, &m, 10);
     if (sign_magnitude)
         for (std::size_t i = 5; i < 15; ++i)
             if (is_signed(i) && (out[i] & 0x80)) out[i] = static_cast<std::uint8_t>(0x80 | (256 - out[i]));
     return hw::good;
 }
+// Which fixed byte (55 AA, then for a maneuver 10 00) or the length failed:
+// robowire's order (each fixed byte the input holds, then the length).
+// Out of line, off the good path.
+[[gnu::cold, gnu::noinline]] hw::error fixed_error(const std::uint8_t* p, std::size_t n, std::size_t count) {
+    static constexpr std::uint8_t fixed[4] = {0x55, 0xAA, 0x10, 0x00};
+    static constexpr hw::err code[4] = {hw::bad_header, hw::bad_header, hw::bad_command, hw::bad_sequence};
+    for (std::size_t i = 0; i < count && i < n; ++i)
+        if (p[i] != fixed[i]) return hw::fail(code[i], i);
+    return hw::length(n, 20);
+}
 HW_CODEC hw::error decode_frame(const std::uint8_t* p, std::size_t n, frame& f) {
-    if (auto e = hw::length(n, 20); e.code) return e;
-    if (p[0] != 0x55) return hw::fail(hw::bad_header, 0);
-    if (p[1] != 0xAA) return hw::fail(hw::bad_header, 1);
+    if (n != 20 || p[0] != 0x55 || p[1] != 0xAA) return fixed_error(p, n, 2);
     f.command = p[2];
     f.remaining = p[3];
     std::memcpy(f.payload, p + 5, 15);
     return hw::good;
 }
 HW_CODEC hw::error decode_maneuver(const std::uint8_t* p, std::size_t n, bool sign_magnitude, maneuver& m) {
-    frame f;
-    if (auto e = decode_frame(p, n, f); e.code) return e;
-    if (f.command != 0x10) return hw::fail(hw::bad_command, 2);
-    std::uint8_t b[15];
-    std::memcpy(b, f.payload, 15);
-    if (sign_magnitude)
+    if (n != 20 || p[0] != 0x55 || p[1] != 0xAA || p[2] != 0x10 || p[3] != 0) return fixed_error(p, n, 4);
+    std::memcpy(&m, p + 5, 10);
+    if (sign_magnitude) {
+        auto* b = reinterpret_cast<std::uint8_t*>(&m);
         for (std::size_t i = 5; i < 15; ++i)
             if (is_signed(i) && (b[i - 5] & 0x80)) b[i - 5] = static_cast<std::uint8_t>(-(b[i - 5] & 0x7F));
-    m = {static_cast<std::int8_t>(b[0]), b[1], static_cast<std::int8_t>(b[2]), static_cast<std::int8_t>(b[3]),
-         b[4], b[5], b[6], b[7], static_cast<std::int8_t>(b[8]), static_cast<std::int8_t>(b[9])};
+    }
     return check(m);
 }
 
@@ -141,12 +141,11 @@ struct reassembler {
 }  // namespace
 
 ENTRY void hw_navbot_encode_maneuver(const std::uint8_t* b) {
-    maneuver m{};
-    m.pitch = static_cast<std::int8_t>(static_cast<std::int8_t>(b[0]) % 101);
-    m.yaw = static_cast<std::int8_t>(static_cast<std::int8_t>(b[1]) % 101);
-    m.switch_a = b[2] % 3;
+    // every channel from the input, as navbot.cpp
+    const maneuver m{static_cast<std::int8_t>(b[0]), b[1], static_cast<std::int8_t>(b[2]), static_cast<std::int8_t>(b[3]),
+                     b[4], b[5], b[6], b[7], static_cast<std::int8_t>(b[8]), static_cast<std::int8_t>(b[9])};
     std::uint8_t out[20];
-    if (encode(m, b[3] & 1, out).code == 0) hw::out(out, 20);
+    if (encode(m, b[10] & 1, out).code == 0) hw::out(out, 20);
 }
 ENTRY void hw_navbot_decode_frame(const std::uint8_t* p, std::size_t n) {
     frame f;

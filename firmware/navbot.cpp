@@ -7,11 +7,13 @@
 namespace nb = robowire::navbot;
 
 ENTRY void navbot_encode_maneuver(std::span<const std::uint8_t> b) {
-    nb::maneuver m{};
-    m.pitch = static_cast<std::int8_t>(static_cast<std::int8_t>(b[0]) % 101);
-    m.yaw = static_cast<std::int8_t>(static_cast<std::int8_t>(b[1]) % 101);
-    m.switch_a = static_cast<nb::switch_a>(b[2] % 3);
-    const auto w = nb::encode(m, (b[3] & 1) ? nb::sign_encoding::sign_magnitude : nb::sign_encoding::twos_complement);
+    // every channel from the input (an app's values: checked by encode)
+    const nb::maneuver m{static_cast<std::int8_t>(b[0]), b[1], static_cast<std::int8_t>(b[2]),
+                         static_cast<std::int8_t>(b[3]), static_cast<nb::switch_a>(b[4]),
+                         static_cast<nb::switch_b>(b[5]), static_cast<nb::switch_c>(b[6]),
+                         static_cast<nb::switch_d>(b[7]), static_cast<std::int8_t>(b[8]),
+                         static_cast<std::int8_t>(b[9])};
+    const auto w = nb::encode(m, (b[10] & 1) ? nb::sign_encoding::sign_magnitude : nb::sign_encoding::twos_complement);
     if (w) out(*w);
 }
 ENTRY void navbot_decode_frame(std::span<const std::uint8_t> b) {

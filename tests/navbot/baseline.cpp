@@ -74,3 +74,86 @@ TEST_CASE("navbot: the hand-written baseline reassembles like robowire", "[navbo
     }
     CHECK(errors > 0);
 }
+
+TEST_CASE("navbot: the hand-written maneuver codec decodes and encodes like robowire",
+          "[navbot][maneuver][baseline]") {
+    namespace nb = robowire::navbot;
+    std::mt19937 rng(20261205);
+    auto pick = [&](unsigned n) { return static_cast<unsigned>(rng() % n); };
+    // a byte, often one a valid maneuver has
+    auto value = [&]() {
+        switch (pick(4)) {
+        case 0: return static_cast<std::uint8_t>(rng());
+        case 1: return static_cast<std::uint8_t>(pick(3));
+        case 2: return static_cast<std::uint8_t>(256 - pick(6));
+        default: return static_cast<std::uint8_t>(pick(101));
+        }
+    };
+    std::size_t decoded = 0, encoded = 0, errors = 0;
+    for (int k = 0; k < 100000; ++k) {
+        const bool sm = pick(2) != 0;
+        const auto enc = sm ? nb::sign_encoding::sign_magnitude : nb::sign_encoding::twos_complement;
+        std::array<std::uint8_t, 24> wire{};
+        for (auto& b : wire) b = value();
+        // each channel valid 7 times in 8 (signed ones in the frame's sign encoding)
+        constexpr int lo[10] = {-100, 0, -100, -100, 0, 0, 0, 0, -5, -5}, hi[10] = {100, 100, 100, 100, 2, 1, 1, 2, 5, 5};
+        for (std::size_t c = 0; c < 10; ++c) {
+            if (pick(8) == 0) continue;
+            const int v = lo[c] + static_cast<int>(pick(static_cast<unsigned>(hi[c] - lo[c] + 1)));
+            wire[5 + c] = static_cast<std::uint8_t>(sm && v < 0 ? 0x80 | -v : v & 0xFF);
+        }
+        const std::size_t n = pick(4) ? 20 : pick(24);
+        if (pick(16)) wire[0] = 0x55;
+        if (pick(16)) wire[1] = 0xAA;
+        if (pick(8)) wire[2] = 0x10;
+        if (pick(8)) wire[3] = 0;
+        INFO("frame " << k << ": " << n << " bytes, " << (sm ? "sign-magnitude" : "two's complement"));
+        const auto ours = nb::decode_maneuver(std::span<const std::uint8_t>(wire.data(), n), enc);
+        maneuver theirs{};
+        const hw::error e = decode_maneuver(wire.data(), n, sm, theirs);
+        REQUIRE(static_cast<int>(e.code) == static_cast<int>(ours.code()));
+        if (!ours) {
+            REQUIRE(e.offset == ours.error().offset);
+            ++errors;
+        } else {
+            ++decoded;
+            REQUIRE(theirs.roll == ours->roll);
+            REQUIRE(theirs.height == ours->height);
+            REQUIRE(theirs.pitch == ours->pitch);
+            REQUIRE(theirs.yaw == ours->yaw);
+            REQUIRE(theirs.switch_a == static_cast<std::uint8_t>(ours->switch_a));
+            REQUIRE(theirs.switch_b == static_cast<std::uint8_t>(ours->switch_b));
+            REQUIRE(theirs.switch_c == static_cast<std::uint8_t>(ours->switch_c));
+            REQUIRE(theirs.switch_d == static_cast<std::uint8_t>(ours->switch_d));
+            REQUIRE(theirs.ball_x == ours->ball_x);
+            REQUIRE(theirs.ball_y == ours->ball_y);
+        }
+        // encode the maneuver in wire[5..14] as values (two's complement)
+        maneuver m;
+        std::memcpy(&m, wire.data() + 5, sizeof m);
+        if (pick(2)) m.pitch = static_cast<std::int8_t>(-static_cast<int>(pick(101)));
+        const nb::maneuver mo{m.roll,
+                              m.height,
+                              m.pitch,
+                              m.yaw,
+                              static_cast<nb::switch_a>(m.switch_a),
+                              static_cast<nb::switch_b>(m.switch_b),
+                              static_cast<nb::switch_c>(m.switch_c),
+                              static_cast<nb::switch_d>(m.switch_d),
+                              m.ball_x,
+                              m.ball_y};
+        const auto w = nb::encode(mo, enc);
+        std::uint8_t out[20];
+        const hw::error ee = encode(m, sm, out);
+        REQUIRE(static_cast<int>(ee.code) == static_cast<int>(w.code()));
+        if (w) {
+            ++encoded;
+            REQUIRE(std::equal(out, out + 20, w->begin()));
+        } else {
+            REQUIRE(ee.offset == w.error().offset);
+        }
+    }
+    CHECK(decoded > 1000);
+    CHECK(encoded > 1000);
+    CHECK(errors > 1000);
+}

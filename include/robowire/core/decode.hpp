@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "detail/decode.hpp"
+#include "detail/encode.hpp"
 #include "result.hpp"
 #include "table.hpp"
 
@@ -80,6 +81,12 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, in_bytes in) noexcept
     constexpr std::size_t extent = table_v<M>.max_size();
     constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
     std::conditional_t<OnePass && Fresh, fresh, error> err{};
+    if constexpr (OnePass && copy_then_check_v<M>) {  // every field copied, then checked as encode checks
+        if (!ROBOWIRE_CONSTANT_EVALUATED()) {
+            write_body(out, in);
+            return check_members(out);
+        }
+    }
     if constexpr (OnePass) {
         const auto known = in.size() > extent ? in.first(extent) : in;
         if (!decode_record<M>(out, known, 0, err, fields)) return err;
@@ -97,8 +104,8 @@ namespace codec::inline ROBOWIRE_MODE_NAMESPACE {
 // dispatchers that have checked both already (`in` holds at least
 // max_size_v<M> bytes). Returns the first field error, or errc::ok.
 // On an error, nothing is written to `out` (under ROBOWIRE_OPTIMIZE_SIZE, in
-// one pass with less code, the fields before the error may be: for an
-// output that is discarded on an error, such as a dispatcher's result).
+// one pass with less code, fields may be: for an output that is discarded on
+// an error, such as a dispatcher's result).
 template <described M>
 ROBOWIRE_ALWAYS_INLINE constexpr error decode_fields(M& out, std::span<const std::uint8_t> in) noexcept {
     return detail::decode_body<M, ROBOWIRE_OPTIMIZE_SIZE>(out, detail::in_bytes(in.data(), max_size_v<M>));
@@ -248,6 +255,12 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, in_bytes in) noexc
     }
     return decode_body < M, ROBOWIRE_OPTIMIZE_SIZE && !Keep, !Keep > (out, in);
 }
+// decode() under ROBOWIRE_OPTIMIZE_SIZE makes the message (its member
+// initialisers) before decoding into it, unless the decode writes every member.
+template <class M, bool = ROBOWIRE_OPTIMIZE_SIZE != 0>
+inline constexpr bool made_first_v = false;
+template <class M>
+inline constexpr bool made_first_v<M, true> = !flat_record_v<M>;
 // decode_into's work, out of line: the input as pointer and size (a span that an
 // inlined caller passes on by value is copied through the stack first). Keep:
 // `out` is left as it was on an error (decode_into; decode() builds a result).
@@ -292,12 +305,13 @@ template <described M>
     // scope g++ 12 copies it out). Speed: the message is made once the input
     // passed its checks, so that the fields' stores overwrite its member
     // initialisers with no branch between and the compiler drops them.
-    // Size: decode_into's code.
-    result<M> r = ROBOWIRE_OPTIMIZE_SIZE ? detail::in_place_result<M>() : result<M>(codec::unset_t{});
+    // Size: decode_into's code, into a message made first (with no
+    // initialiser stored where the decode writes every member).
+    constexpr bool made = detail::made_first_v<M>;
+    result<M> r = made ? detail::in_place_result<M>() : result<M>(codec::unset_t{});
     if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
-        if (const error e = detail::decode_raw<M, false>(codec::unchecked_value(r), in.data(), in.size());
-            e.code != errc::ok)
-            r = e;
+        M& v = made ? codec::unchecked_value(r) : detail::build_unset(r);
+        if (const error e = detail::decode_raw<M, false>(v, in.data(), in.size()); e.code != errc::ok) r = e;
         return r;
     } else {
         if (!detail::input_ok<detail::no_offset, M>(r, in)) return r;

@@ -32,7 +32,13 @@ namespace codec::inline ROBOWIRE_MODE_NAMESPACE {
 template <described M>
 ROBOWIRE_ALWAYS_INLINE constexpr bool check_fields(const M& m, error& err) noexcept {
     constexpr auto fields = std::make_index_sequence<detail::field_count_v<M>>{};
-    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
+    if constexpr (detail::copy_then_check_v<M>) {  // the function decode checks M with
+        if (!ROBOWIRE_CONSTANT_EVALUATED()) {
+            err = detail::check_members(m);
+            return err.code == errc::ok;
+        }
+        return detail::check_record<M>(m, 0, err, fields);
+    } else if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
         return detail::check_record<M>(m, 0, err, fields);
     } else {  // as one yes/no; which one failed, out of line: no error set up on the good path
         detail::no_error ignore;

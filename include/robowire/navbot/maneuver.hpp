@@ -9,8 +9,11 @@
 
 #include "../core/config.hpp"  // first: the C++ version check
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
+#include <type_traits>
 
 #include "../core/bits.hpp"
 #include "frame.hpp"
@@ -85,16 +88,38 @@ enum class sign_encoding : std::uint8_t {
 };
 
 namespace impl {
+// Byte offsets of maneuver's i8 fields (the signed channels), from its table.
+template <class Deferred = void>
+constexpr auto make_signed_offsets() noexcept {
+    constexpr std::size_t n = [] {
+        std::size_t k = 0;
+        for_each_field<maneuver>([&](const auto& f) {
+            if constexpr (std::remove_cvref_t<decltype(f)>::kind == wire_kind::i8) ++k;
+        });
+        return k;
+    }();
+    std::array<std::uint8_t, n> offsets{};
+    std::size_t k = 0;
+    for_each_field<maneuver>([&](const auto& f) {
+        if constexpr (std::remove_cvref_t<decltype(f)>::kind == wire_kind::i8)
+            offsets[k++] = static_cast<std::uint8_t>(f.offset);
+    });
+    return offsets;
+}
+// In flash: one loop over them, not a copy of the conversion per channel.
+template <class Deferred = void>
+inline constexpr auto signed_offsets_v = make_signed_offsets<Deferred>();
 // Rewrites every i8 field of maneuver's table between the two encodings.
 template <bool ToSignMagnitude, class Deferred = void>
 constexpr void convert_signed(std::span<std::uint8_t> b) noexcept {
-    for_each_field<maneuver>([&](const auto& f) {
-        if constexpr (std::remove_cvref_t<decltype(f)>::kind == wire_kind::i8) {
-            if constexpr (ToSignMagnitude)
-                b[f.offset] = to_sign_magnitude(static_cast<std::int8_t>(b[f.offset])).value_or(std::uint8_t{0x80});
-            else b[f.offset] = static_cast<std::uint8_t>(from_sign_magnitude(b[f.offset]));
+    for (const std::uint8_t off : signed_offsets_v<Deferred>) {
+        if constexpr (ToSignMagnitude) {  // to_sign_magnitude; -128 (in no channel's range) as 0x80
+            const auto v = static_cast<std::int8_t>(b[off]);
+            b[off] = static_cast<std::uint8_t>(v < 0 ? 0x80 | -v : v);
+        } else {
+            b[off] = static_cast<std::uint8_t>(from_sign_magnitude(b[off]));
         }
-    });
+    }
 }
 }  // namespace impl
 

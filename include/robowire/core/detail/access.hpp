@@ -279,4 +279,64 @@ ROBOWIRE_ALWAYS_INLINE std::size_t record_copy_size(const E& e) noexcept {
         (std::make_index_sequence<field_count_v<E>>{});
     }
 }
+
+// Is a field of shape S valid in [Min, Max] decoded with no check (every
+// value of its wire bytes valid: full-range integers, floats, records of such
+// fields)? Then a pass that checks as it writes may copy it too.
+template <class S, std::int64_t Min, std::int64_t Max>
+constexpr bool unchecked_field() noexcept;
+template <class E, std::size_t... J>
+constexpr bool unchecked_record(std::index_sequence<J...>) noexcept {
+    return (unchecked_field<shape_t<E, J>, field_v<E, J>.valid.min, field_v<E, J>.valid.max>() && ...);
+}
+template <class S, std::int64_t Min, std::int64_t Max>
+constexpr bool unchecked_field() noexcept {
+    using E = typename S::element_type;
+    using W = typename S::wire_type;
+    if constexpr (S::is_optional) {
+        return false;
+    } else if constexpr (S::kind == wire_kind::record) {
+        return unchecked_record<E>(std::make_index_sequence<field_count_v<E>>{});
+    } else if constexpr (!scalar_wire_v<W> || std::is_enum_v<E> || !same_bytes_v<W, E>) {
+        return false;
+    } else if constexpr (W::kind == wire_kind::f32le) {
+        return true;
+    } else {
+        using raw = typename W::raw_type;
+        return Min <= std::numeric_limits<raw>::min() && Max >= std::numeric_limits<raw>::max();
+    }
+}
+// A field that a one-pass decode may copy and check afterwards on its member
+// (check_members, shared with encode): its checks on the member are its
+// checks on the wire bytes (same bytes, same signedness), or it has none.
+template <class S, std::int64_t Min, std::int64_t Max>
+constexpr bool check_after_copy() noexcept {
+    using E = typename S::element_type;
+    using W = typename S::wire_type;
+    if constexpr (unchecked_field<S, Min, Max>()) return true;
+    else if constexpr (S::is_optional || S::kind == wire_kind::record || !scalar_wire_v<W>) return false;
+    else if constexpr (!same_bytes_v<W, E>) return false;
+    else if constexpr (std::is_enum_v<E>) return true;
+    else return std::is_same_v<E, typename W::raw_type>;
+}
+inline constexpr std::size_t shared_check_min = 3;  // checked fields for one shared check function
+template <class M, std::size_t... I>
+constexpr bool copy_then_check(std::index_sequence<I...>) noexcept {
+    constexpr bool all = (check_after_copy<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max>() && ...);
+    constexpr std::size_t checked =
+        ((unchecked_field<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max>() ? 0 : 1) + ... + 0);
+    return all && checked >= shared_check_min;
+}
+inline namespace ROBOWIRE_MODE_NAMESPACE {
+// Under ROBOWIRE_OPTIMIZE_SIZE with ROBOWIRE_COPY_RUNS, for a message with
+// several checked fields: its one-pass decode copies every field, then
+// checks the message with check_members, the function encode checks it with
+// (one copy of the checks in a program).
+// (Worked out only in those settings: nothing to compile otherwise.)
+template <class M, bool = (ROBOWIRE_OPTIMIZE_SIZE != 0) && (ROBOWIRE_COPY_RUNS != 0)>
+inline constexpr bool copy_then_check_v = false;
+template <class M>
+inline constexpr bool copy_then_check_v<M, true> = copy_then_check<M>(std::make_index_sequence<field_count_v<M>>{});
+}  // namespace ROBOWIRE_MODE_NAMESPACE
+
 }  // namespace robowire::detail

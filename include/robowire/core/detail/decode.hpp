@@ -208,32 +208,6 @@ ROBOWIRE_ALWAYS_INLINE void copy_or_decode(unsigned char* obj, typename S::membe
     }
 }
 
-// Is a field of shape S valid in [Min, Max] decoded with no check (every
-// value of its wire bytes valid: full-range integers, floats, records of such
-// fields)? Then a pass that checks as it writes may copy it too.
-template <class S, std::int64_t Min, std::int64_t Max>
-constexpr bool unchecked_field() noexcept;
-template <class E, std::size_t... J>
-constexpr bool unchecked_record(std::index_sequence<J...>) noexcept {
-    return (unchecked_field<shape_t<E, J>, field_v<E, J>.valid.min, field_v<E, J>.valid.max>() && ...);
-}
-template <class S, std::int64_t Min, std::int64_t Max>
-constexpr bool unchecked_field() noexcept {
-    using E = typename S::element_type;
-    using W = typename S::wire_type;
-    if constexpr (S::is_optional) {
-        return false;
-    } else if constexpr (S::kind == wire_kind::record) {
-        return unchecked_record<E>(std::make_index_sequence<field_count_v<E>>{});
-    } else if constexpr (!scalar_wire_v<W> || std::is_enum_v<E> || !same_bytes_v<W, E>) {
-        return false;
-    } else if constexpr (W::kind == wire_kind::f32le) {
-        return true;
-    } else {
-        using raw = typename W::raw_type;
-        return Min <= std::numeric_limits<raw>::min() && Max >= std::numeric_limits<raw>::max();
-    }
-}
 // copy_or_decode for a pass that checks as it writes (one pass; its output is
 // discarded on an error, so a run left pending then is never copied).
 template <class S, std::int64_t Min, std::int64_t Max, class Err>

@@ -146,6 +146,16 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off,
     }
 }
 
+// M's fields in m checked, in table order: the first error, or errc::ok. Out
+// of line under ROBOWIRE_OPTIMIZE_SIZE: decode (copy_then_check_v) and encode
+// of a message share it.
+template <class M>
+ROBOWIRE_SIZE_NOINLINE constexpr error check_members(const M& m) noexcept {
+    error err{};
+    (void)check_record<M>(m, 0, err, std::make_index_sequence<field_count_v<M>>{});
+    return err;
+}
+
 // Whether a checked array of shape S valid in [Min, Max] is stored whole,
 // unless it would be a memcpy call under ROBOWIRE_OPTIMIZE_SIZE.
 template <class S, std::int64_t Min, std::int64_t Max>
