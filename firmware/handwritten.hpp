@@ -13,7 +13,8 @@
 namespace hw {
 
 // A codec function of the baseline: kept out of line, as if compiled in its own
-// translation unit (robowire's decoders are not inlined into the callers either).
+// translation unit (robowire's header-only codecs may be inlined into their
+// callers: docs/footprint.md says so beside the figures).
 #if defined(__clang__)  // no noipa (the host test of tests/navbot/baseline.cpp)
 #define HW_CODEC [[gnu::noinline]]
 #else

@@ -5,22 +5,28 @@
 #include "handwritten.hpp"
 
 namespace {
+struct wakeup_t { std::uint8_t enabled; std::uint32_t idle, sleep; };
+struct motor_t { std::int8_t power[6]; std::uint8_t brake, lut; };
+struct motor_ext_t { std::int32_t ref[4]; std::int8_t power[2]; std::uint8_t brake, lut; };
+struct led_t { bool has_colors, has_blink; std::uint8_t rgb[12], frequency_hz[4], duty[4]; };
+struct uart_t { std::uint8_t channel; std::uint32_t baud; };
+struct pid_params { std::uint8_t port; float f[8]; std::int8_t lim_out, db, boost; std::uint8_t mode; };
 struct command {
     std::uint8_t kind;  // the command byte
     union {
         char name[12];
-        struct { std::uint8_t enabled; std::uint32_t idle, sleep; } wakeup;
+        wakeup_t wakeup;
         float factors[6];
-        struct { std::int8_t power[6]; std::uint8_t brake, lut; } motor;
-        struct { std::int32_t ref[4]; std::int8_t power[2]; std::uint8_t brake, lut; } motor_ext;
+        motor_t motor;
+        motor_ext_t motor_ext;
         std::uint8_t one;  // 0x32, 0x34, 0x35, 0x37, 0x51
         std::uint8_t ramps[12];
-        struct { bool has_colors, has_blink; std::uint8_t rgb[12], frequency_hz[4], duty[4]; } led;
+        led_t led;
         std::uint8_t limits[6];
-        struct { std::uint8_t channel; std::uint32_t baud; } uart;
+        uart_t uart;
         std::uint8_t functions[4];
         std::int32_t reference[4];
-        struct { std::uint8_t port; float f[8]; std::int8_t lim_out, db, boost; std::uint8_t mode; } pid;
+        pid_params pid;
     };
 };
 // The runs copied below: wire bytes [a, b) are the members from the named one on.
@@ -205,12 +211,13 @@ static_assert(offsetof(status, temperature) == 8 && offsetof(status, accel) == 1
               offsetof(status, charge) == 21 && sizeof(status::motors) == 32 &&
               offsetof(status, motor_output) - offsetof(status, process_value) == 13,
               "each status copy below is a run of members");
+struct charger_t { std::uint8_t n; std::uint8_t data[128]; };
 struct notification {
     std::uint8_t kind;
     union {
         status s;
         float factors[6];
-        struct { std::uint8_t n; std::uint8_t data[128]; } charger;
+        charger_t charger;
     };
 };
 HW_CODEC hw::error decode_status(const std::uint8_t* p, std::size_t n, status& s) {

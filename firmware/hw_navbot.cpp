@@ -167,8 +167,8 @@ ENTRY void hw_navbot_fragment(const std::uint8_t* payload, std::size_t n) {
     for (std::size_t k = 0; k < frames; ++k) {
         std::uint8_t f[20] = {0x55, 0xAA, 0x02, static_cast<std::uint8_t>(frames - 1 - k), 0};
         const std::size_t m = n - 15 * k < 15 ? n - 15 * k : 15;
-        std::memcpy(f + 5, payload + 15 * k, m);
-        std::memset(f + 5 + m, 0, 15 - m);
+        for (std::size_t i = 0; i < 15; ++i)  // no memcpy call for a variable length
+            f[5 + i] = i < m ? payload[15 * k + i] : 0;
         hw::out(f, 20);
     }
 }
