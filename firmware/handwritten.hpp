@@ -12,14 +12,10 @@
 
 namespace hw {
 
-// A codec function of the baseline: kept out of line, as if compiled in its own
-// translation unit (robowire's header-only codecs may be inlined into their
-// callers: docs/footprint.md says so beside the figures).
-#if defined(__clang__)  // no noipa (the host test of tests/navbot/baseline.cpp)
-#define HW_CODEC [[gnu::noinline]]
-#else
-#define HW_CODEC [[gnu::noipa]]
-#endif
+// A codec function of the baseline: a plain function of the program's file,
+// which the compiler may inline into its callers, as it may robowire's
+// header-only codecs (the same freedom on both sides).
+#define HW_CODEC
 
 // Same codes as robowire::errc, so both report the same thing.
 enum err : std::uint8_t {
