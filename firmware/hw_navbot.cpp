@@ -148,7 +148,7 @@ ENTRY void hw_navbot_encode_maneuver(const std::uint8_t* b) {
     if (encode(m, b[10] & 1, out).code == 0) hw::out(out, 20);
 }
 ENTRY void hw_navbot_decode_frame(const std::uint8_t* p, std::size_t n) {
-    frame f;
+    frame f{};
     maneuver m;
     auto e = decode_frame(p, n, f);
     if (e.code == 0 && f.command == 0x10) e = decode_maneuver(p, n, false, m);
