@@ -5,7 +5,6 @@
 #include <catch2/catch.hpp>
 
 #include <array>
-#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -15,6 +14,15 @@
 #include <vector>
 
 #if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+namespace {
+// A float's bit pattern (NaNs compare unequal as floats).
+std::uint32_t bits(float f) {
+    std::uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    return u;
+}
+}  // namespace
+
 namespace hw_status {
 #define main hw_buwizz3_status_main  // the size program's own main
 #include "../../firmware/hw_buwizz3_status.cpp"
@@ -60,10 +68,9 @@ TEST_CASE("buwizz3: the hand-written status decoder decodes like robowire", "[bu
         }
         REQUIRE(theirs.has_pid == s.pid_state.has_value());
         if (s.pid_state) {  // bit patterns: NaNs compare unequal
-            REQUIRE(std::bit_cast<std::uint32_t>(theirs.process_value) ==
-                    std::bit_cast<std::uint32_t>(s.pid_state->process_value));
-            REQUIRE(std::bit_cast<std::uint32_t>(theirs.error) == std::bit_cast<std::uint32_t>(s.pid_state->error));
-            REQUIRE(std::bit_cast<std::uint32_t>(theirs.output) == std::bit_cast<std::uint32_t>(s.pid_state->output));
+            REQUIRE(bits(theirs.process_value) == bits(s.pid_state->process_value));
+            REQUIRE(bits(theirs.error) == bits(s.pid_state->error));
+            REQUIRE(bits(theirs.output) == bits(s.pid_state->output));
             REQUIRE(theirs.integrator == s.pid_state->integrator);
             REQUIRE(theirs.motor_output == s.pid_state->motor_output);
         }
