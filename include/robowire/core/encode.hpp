@@ -37,8 +37,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_fields(const M& m, error& err) noexc
             err = detail::check_members(m);
             return err.code == errc::ok;
         }
-        return detail::check_record<M>(m, 0, err, fields);
-    } else if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
+    }
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
         return detail::check_record<M>(m, 0, err, fields);
     } else {  // as one yes/no; which one failed, out of line: no error set up on the good path
         detail::no_error ignore;
