@@ -6,22 +6,22 @@
 
 namespace bw = robowire::buwizz3;
 
-ENTRY void buwizz3_decode_command(std::span<const std::uint8_t> b) {
-    const auto c = bw::decode_command(b);
+ENTRY void buwizz3_decode_command(const std::uint8_t* p, std::size_t n) {
+    const auto c = bw::decode_command({p, n});
     sink = c ? static_cast<std::uint32_t>(c->index()) : static_cast<std::uint32_t>(c.code());
 }
-ENTRY void buwizz3_decode_notification(std::span<const std::uint8_t> b) {
-    const auto n = bw::decode_notification(b);
-    sink = n ? static_cast<std::uint32_t>(n->index()) : static_cast<std::uint32_t>(n.code());
+ENTRY void buwizz3_decode_notification(const std::uint8_t* p, std::size_t n) {
+    const auto r = bw::decode_notification({p, n});
+    sink = r ? static_cast<std::uint32_t>(r->index()) : static_cast<std::uint32_t>(r.code());
 }
-ENTRY void buwizz3_encode_command(std::span<const std::uint8_t> b) {
+ENTRY void buwizz3_encode_command(const std::uint8_t* p, std::size_t n) {
     // a command built from input bytes, then encoded
-    const auto c = bw::decode_command(b);
+    const auto c = bw::decode_command({p, n});
     if (!c) return;
     const auto w = robowire::encode(*c);
     if (w) out(*w);
 }
-ENTRY void buwizz3_encode_drive(std::span<const std::uint8_t> b) {
+ENTRY void buwizz3_encode_drive(const std::uint8_t* b) {
     // every field from the input (an app's values: checked by encode)
     bw::set_motor_data_extended m{};
     for (std::size_t i = 0; i < 4; ++i) m.reference[i] = static_cast<std::int32_t>(b[i] * 1000);
@@ -34,10 +34,10 @@ ENTRY void buwizz3_encode_drive(std::span<const std::uint8_t> b) {
 
 int main() {
     const auto in = read_input<160>();
-    const auto b = std::span(in).first(size_in(129));
-    buwizz3_decode_command(b);
-    buwizz3_decode_notification(b);
-    buwizz3_encode_command(b);
-    buwizz3_encode_drive(in);
+    const std::size_t n = size_in(129);
+    buwizz3_decode_command(in.data(), n);
+    buwizz3_decode_notification(in.data(), n);
+    buwizz3_encode_command(in.data(), n);
+    buwizz3_encode_drive(in.data());
     return 0;
 }

@@ -6,14 +6,14 @@
 
 namespace bw = robowire::buwizz3;
 
-ENTRY void buwizz3_decode_status(std::span<const std::uint8_t> b) {
-    const auto s = robowire::decode<bw::status>(b);
+ENTRY void buwizz3_decode_status(const std::uint8_t* p, std::size_t n) {
+    const auto s = robowire::decode<bw::status>({p, n});
     if (s) out(std::span(reinterpret_cast<const std::uint8_t*>(&*s), sizeof(bw::status)));  // every field
     else sink = static_cast<std::uint32_t>(s.code()) | std::uint32_t{s.error().offset} << 8;  // as hw::report
 }
 
 int main() {
     const auto in = read_input<160>();
-    buwizz3_decode_status(std::span(in).first(size_in(129)));
+    buwizz3_decode_status(in.data(), size_in(129));
     return 0;
 }

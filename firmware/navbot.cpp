@@ -6,7 +6,7 @@
 
 namespace nb = robowire::navbot;
 
-ENTRY void navbot_encode_maneuver(std::span<const std::uint8_t> b) {
+ENTRY void navbot_encode_maneuver(const std::uint8_t* b) {
     // every channel from the input (an app's values: checked by encode)
     const nb::maneuver m{static_cast<std::int8_t>(b[0]), b[1], static_cast<std::int8_t>(b[2]),
                          static_cast<std::int8_t>(b[3]), static_cast<nb::switch_a>(b[4]),
@@ -16,29 +16,30 @@ ENTRY void navbot_encode_maneuver(std::span<const std::uint8_t> b) {
     const auto w = nb::encode(m, (b[10] & 1) ? nb::sign_encoding::sign_magnitude : nb::sign_encoding::twos_complement);
     if (w) out(*w);
 }
-ENTRY void navbot_decode_frame(std::span<const std::uint8_t> b) {
+ENTRY void navbot_decode_frame(const std::uint8_t* p, std::size_t n) {
+    const std::span b(p, n);
     const auto m = nb::decode_frame(b);
     sink = m ? static_cast<std::uint32_t>(m->index()) : static_cast<std::uint32_t>(m.code());
     const auto sm = nb::decode_maneuver(b, nb::sign_encoding::sign_magnitude);
     if (sm) sink = static_cast<std::uint32_t>(sm->pitch);
 }
 nb::reassembler<120> reassembler_state;
-ENTRY void navbot_reassemble(std::span<const std::uint8_t> frame) {
-    const auto st = reassembler_state.push(frame);
+ENTRY void navbot_reassemble(const std::uint8_t* p, std::size_t n) {
+    const auto st = reassembler_state.push({p, n});
     if (st && *st == nb::reassembly::complete) out(reassembler_state.payload());
 }
-ENTRY void navbot_fragment(std::span<const std::uint8_t> payload) {
-    const auto frames = nb::make_frames(nb::command::json, payload);
+ENTRY void navbot_fragment(const std::uint8_t* p, std::size_t n) {
+    const auto frames = nb::make_frames(nb::command::json, {p, n});
     if (!frames) return;
     for (const auto& f : *frames) out(f);
 }
 
 int main() {
     const auto in = read_input<160>();
-    const auto b = std::span(in).first(size_in(40));
-    navbot_encode_maneuver(in);
-    navbot_decode_frame(b);
-    navbot_reassemble(b);
-    navbot_fragment(std::span(in).first(size_in(120)));
+    const std::size_t n = size_in(40);
+    navbot_encode_maneuver(in.data());
+    navbot_decode_frame(in.data(), n);
+    navbot_reassemble(in.data(), n);
+    navbot_fragment(in.data(), size_in(120));
     return 0;
 }

@@ -10,8 +10,8 @@ static_assert(ROBOWIRE_OPTIMIZE_SIZE == 1 && ROBOWIRE_ARRAY_LOOPS == 1 && ROBOWI
               "docs/footprint.md states these settings for -Os on both Cortex-M cores and rv32imc");
 #endif
 
-ENTRY void osp_decode(std::span<const std::uint8_t> b) {
-    const auto m = osp::decode(b);
+ENTRY void osp_decode(const std::uint8_t* p, std::size_t n) {
+    const auto m = osp::decode({p, n});
     sink = m ? static_cast<std::uint32_t>(m->index()) : static_cast<std::uint32_t>(m.code());
 }
 // Alternative `which` of the variant (the protocol's one list), its integer
@@ -37,24 +37,24 @@ ENTRY void osp_encode(std::size_t which, std::uint16_t value) {
     if (r) out(*r);
 }
 osp::scanner scanner_state;
-ENTRY void osp_scan(std::span<const std::uint8_t> chunk) {
-    scanner_state.feed(chunk, [](osp::scanner::frame_bytes f) { osp_decode(f); });
+ENTRY void osp_scan(const std::uint8_t* p, std::size_t n) {
+    scanner_state.feed({p, n}, [](osp::scanner::frame_bytes f) { osp_decode(f.data(), f.size()); });
 }
 struct battery {
     osp::obp1::soc operator()(const osp::obp1::request_soc&) const { return {static_cast<std::uint16_t>(sink)}; }
     osp::obp1::voltage operator()(const osp::obp1::request_voltage&) const { return {static_cast<std::int16_t>(sink)}; }
 };
-ENTRY void osp_serve(std::span<const std::uint8_t> request) {
-    const auto a = osp::serve(request, battery{});
+ENTRY void osp_serve(const std::uint8_t* p, std::size_t n) {
+    const auto a = osp::serve({p, n}, battery{});
     if (a && *a) out(**a);
 }
 
 int main() {
     const auto in = read_input<160>();
-    const auto b = std::span(in).first(size_in(160));
-    osp_decode(b);
+    const std::size_t n = size_in(160);
+    osp_decode(in.data(), n);
     osp_encode(in[0], static_cast<std::uint16_t>(in[1] | in[2] << 8));
-    osp_scan(b);
-    osp_serve(b);
+    osp_scan(in.data(), n);
+    osp_serve(in.data(), n);
     return 0;
 }
