@@ -8,6 +8,8 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string>
+#include <variant>
 
 namespace MIXED_MODES_FILE {
 
@@ -81,6 +83,60 @@ int failures() {
     expect(frames && frames->size() == 3 && last && *last == nb::reassembly::complete &&
            std::equal(payload.begin(), payload.end(), r.payload().begin()));
     return failed;
+}
+
+// What a codec makes of `in`: "E<code>@<offset>" for an error, else the
+// alternative's index and the bytes its value encodes to (or the encode's
+// error). `which` picks the codec: 0 BuWizz3 commands, 1 notifications,
+// 2 decode<status>, 3 decode_into<status> (an error must leave the object as
+// it was), 4 and 5 a NAVBOT maneuver in each sign encoding, 6 decode_frame,
+// 7 OSP.
+template <class R>
+std::string error_text(const R& r) {
+    const robowire::error e = robowire::codec::unchecked_error(r);
+    return "E" + std::to_string(static_cast<int>(e.code)) + "@" + std::to_string(e.offset);
+}
+template <class W>
+std::string encoded_text(const W& w) {
+    if (!w) return "encode " + error_text(w);
+    return std::string(reinterpret_cast<const char*>(w->data()), w->size());
+}
+template <class R>
+std::string variant_text(const R& r) {
+    if (!r) return error_text(r);
+    return std::visit([&](const auto& m) { return std::to_string(r->index()) + ":" + encoded_text(robowire::encode(m)); },
+                      *r);
+}
+std::string outcome(int which, std::span<const std::uint8_t> in) {
+    switch (which) {
+    case 0: return variant_text(bw::decode_command(in));
+    case 1: return variant_text(bw::decode_notification(in));
+    case 2: {
+        const auto r = robowire::decode<bw::status>(in);
+        return r ? encoded_text(robowire::encode(*r)) + (r->pid_state ? "+pid" : "") : error_text(r);
+    }
+    case 3: {
+        bw::status s{};
+        s.flags = 0x5A;
+        s.pid_state = bw::pid_state{1.5f, 2.5f, 3.5f, 4, 5};
+        s.ignored_trailing_bytes = 77;
+        const bw::status before = s;
+        const robowire::error e = robowire::decode_into(s, in);
+        if (e.code != robowire::errc::ok)
+            return "E" + std::to_string(static_cast<int>(e.code)) + "@" + std::to_string(e.offset) +
+                   (s == before ? "" : " changed");
+        return encoded_text(robowire::encode(s)) + (s.pid_state ? "+pid" : "") +
+               std::to_string(s.ignored_trailing_bytes);
+    }
+    case 4:
+    case 5: {
+        const auto enc = which == 4 ? nb::sign_encoding::twos_complement : nb::sign_encoding::sign_magnitude;
+        const auto r = nb::decode_maneuver(in, enc);
+        return r ? encoded_text(nb::encode(*r, enc)) : error_text(r);
+    }
+    case 6: return variant_text(nb::decode_frame(in));
+    default: return variant_text(osp::decode(in));
+    }
 }
 
 // Addresses of the codecs' out-of-line functions as this file calls them: the

@@ -59,12 +59,20 @@ inline constexpr bool message_via_local = !ROBOWIRE_COPY_RUNS, alternative_via_l
 #else
 inline constexpr bool message_via_local = false, alternative_via_local = true;
 #endif
+// decode() under ROBOWIRE_OPTIMIZE_SIZE makes the message (its member
+// initialisers) before decoding into it, unless the decode writes every
+// member (optional blocks made as they are decoded).
+template <class M, bool = ROBOWIRE_OPTIMIZE_SIZE != 0>
+inline constexpr bool made_first_v = false;
+template <class M>
+inline constexpr bool made_first_v<M, true> = !flat_record<M, true>();
 // The write pass: M's fields from an input whose fixed bytes, length and
 // fields are checked (check_record); no branch, runs copied at once.
-template <class M>
+// P: prechecked, or prechecked_unset for unset storage.
+template <class M, class P = prechecked>
 ROBOWIRE_ALWAYS_INLINE constexpr void write_body(M& out, in_bytes in) noexcept {
     constexpr std::size_t extent = table_v<M>.max_size();
-    prechecked none{};
+    P none{};
     (void)decode_record<M>(out, in.size() > extent ? in.first(extent) : in, 0, none,
                            std::make_index_sequence<field_count_v<M>>{});
     if constexpr (reports_trailing<M>) out.ignored_trailing_bytes = in.size() > extent ? in.size() - extent : 0;
@@ -74,16 +82,16 @@ ROBOWIRE_ALWAYS_INLINE constexpr void write_body(M& out, in_bytes in) noexcept {
 // an error `out` is left as it was, and runs of fields are copied at once.
 // OnePass true: each field checked as it is written (less code), for an
 // output that is discarded on an error (a local, a result being built).
-// Fresh (with OnePass): `out` was made just before, so absent optional blocks
-// are empty already.
+// Fresh (with OnePass): `out` was made just before (made_first_v), so absent
+// optional blocks are empty already, or its storage is unset.
 template <class M, bool OnePass = false, bool Fresh = false>
 ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, in_bytes in) noexcept {
     constexpr std::size_t extent = table_v<M>.max_size();
     constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
-    std::conditional_t<OnePass && Fresh, fresh, error> err{};
+    std::conditional_t<OnePass && Fresh, std::conditional_t<made_first_v<M>, fresh, unset>, error> err{};
     if constexpr (OnePass && copy_then_check_v<M>) {  // every field copied, then checked as encode checks
         if (!ROBOWIRE_CONSTANT_EVALUATED()) {
-            write_body(out, in);
+            write_body<M, prechecked_t<decltype(err)>>(out, in);
             return check_members(out);
         }
     }
@@ -255,12 +263,6 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_checked(M& out, in_bytes in) noexc
     }
     return decode_body < M, ROBOWIRE_OPTIMIZE_SIZE && !Keep, !Keep > (out, in);
 }
-// decode() under ROBOWIRE_OPTIMIZE_SIZE makes the message (its member
-// initialisers) before decoding into it, unless the decode writes every member.
-template <class M, bool = ROBOWIRE_OPTIMIZE_SIZE != 0>
-inline constexpr bool made_first_v = false;
-template <class M>
-inline constexpr bool made_first_v<M, true> = !flat_record_v<M>;
 // decode_into's work, out of line: the input as pointer and size (a span that an
 // inlined caller passes on by value is copied through the stack first). Keep:
 // `out` is left as it was on an error (decode_into; decode() builds a result).

@@ -155,23 +155,25 @@ constexpr bool decode_writes_every_member() noexcept {
 }
 template <class M>
 inline constexpr bool decode_writes_every_member_v = decode_writes_every_member<M>();
-// M has no optional, text or tail field, nor a record that has one, and
-// decoding writes every member: each member is at a fixed place and written
-// by a decode (which may then skip the member initialisers, or go through
-// a local: see alternative_via_local).
-template <class M>
+// M has no optional (unless Optionals), text or tail field, nor a record that
+// has one, and decoding writes every member: each member is at a fixed place
+// and written by a decode (which may then skip the member initialisers, or go
+// through a local: see alternative_via_local). An optional block is written
+// whole by a decode (made empty, or made and decoded).
+template <class M, bool Optionals = false>
 constexpr bool flat_record() noexcept;
-template <class M, std::size_t I>
+template <class M, std::size_t I, bool Optionals>
 constexpr bool flat_field() noexcept {
     using F = field_t<M, I>;
-    if constexpr (F::is_optional || F::kind == wire_kind::text || F::kind == wire_kind::tail) return false;
-    else if constexpr (F::kind == wire_kind::record) return flat_record<typename F::element_type>();
+    if constexpr (F::is_optional) return Optionals;
+    else if constexpr (F::kind == wire_kind::text || F::kind == wire_kind::tail) return false;
+    else if constexpr (F::kind == wire_kind::record) return flat_record<typename F::element_type, Optionals>();
     else return true;
 }
-template <class M>
+template <class M, bool Optionals>
 constexpr bool flat_record() noexcept {
     return decode_writes_every_member_v<M>&&[]<std::size_t... I>(std::index_sequence<I...>) {
-        return (flat_field<M, I>() && ...);
+        return (flat_field<M, I, Optionals>() && ...);
     }
     (std::make_index_sequence<field_count_v<M>>{});
 }

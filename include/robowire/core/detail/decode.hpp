@@ -36,16 +36,41 @@ namespace robowire::detail::inline ROBOWIRE_MODE_NAMESPACE {
 
 // The error sink of a write pass whose input check_record passed.
 struct prechecked {};
+// The same, into storage whose members are not initialised (see unset).
+struct prechecked_unset {};
 template <class Err>
-inline constexpr bool checks_v = !std::is_same_v<Err, prechecked>;
-// The error sink of a one-pass decode into a message made just before (decode()
-// under ROBOWIRE_OPTIMIZE_SIZE): an absent optional block is left as made
-// (empty), not reset.
+inline constexpr bool checks_v = !std::is_same_v<Err, prechecked> && !std::is_same_v<Err, prechecked_unset>;
+// The error sinks of a one-pass decode() under ROBOWIRE_OPTIMIZE_SIZE: `fresh`
+// into a message made just before (an absent optional block is left as made,
+// empty); `unset` into storage whose members are not initialised (every
+// optional block is made here, empty or holding the decoded value).
 struct fresh : error {
+    using error::operator=;
+};
+struct unset : error {
     using error::operator=;
 };
 template <class Err>
 inline constexpr bool fresh_v = std::is_same_v<Err, fresh>;
+template <class Err>
+inline constexpr bool unset_v = std::is_same_v<Err, unset> || std::is_same_v<Err, prechecked_unset>;
+// The write-pass sink for the storage Err decodes into.
+template <class Err>
+using prechecked_t = std::conditional_t<unset_v<Err>, prechecked_unset, prechecked>;
+
+// An optional made empty, or holding a value-initialised value, without
+// reading its flag (its storage may be unset). Its value type is trivially
+// destructible (a result's values are).
+template <class O>
+ROBOWIRE_ALWAYS_INLINE constexpr void make_empty(O& o) noexcept {
+    if (ROBOWIRE_CONSTANT_EVALUATED()) o.reset();
+    else ::new (static_cast<void*>(&o)) O();
+}
+template <class O>
+ROBOWIRE_ALWAYS_INLINE constexpr auto& make_engaged(O& o) noexcept {
+    if (ROBOWIRE_CONSTANT_EVALUATED()) return o.emplace();
+    return **::new (static_cast<void*>(&o)) O(std::in_place);
+}
 
 // A number, enum, bool or float of wire type W, valid in [Min, Max]: shared
 // by every field of the same kind and range (fewer functions to compile).
@@ -147,7 +172,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(typename S::member_type& memb
                                                    Err& err) noexcept {
     if constexpr (S::is_optional) {
         if (in.size() <= off) {
-            if constexpr (!fresh_v<Err>) member.reset();
+            if constexpr (unset_v<Err>) make_empty(member);
+            else if constexpr (!fresh_v<Err>) member.reset();
             return true;
         }  // absent
         if constexpr (checks_v<Err>) {
@@ -157,7 +183,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_field(typename S::member_type& memb
             }
         }
         if constexpr (ROBOWIRE_OPTIMIZE_SIZE || (!checks_v<Err> && ROBOWIRE_COPY_RUNS)) {  // decoded in place
-            return decode_value<S, Min, Max>(member.emplace(), in, off, err);
+            if constexpr (unset_v<Err>) return decode_value<S, Min, Max>(make_engaged(member), in, off, err);
+            else return decode_value<S, Min, Max>(member.emplace(), in, off, err);
         } else {
             value_t<typename S::member_type> tmp{};  // stored whole once decoded: the stores merge
             if (!decode_value<S, Min, Max>(tmp, in, off, err)) return false;
@@ -187,8 +214,9 @@ ROBOWIRE_ALWAYS_INLINE void flush(unsigned char* obj, in_bytes in, const run& r)
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
 #endif
-// A field at byte `wire`: joins the current run, starts one, or is decoded on its own.
-template <class S, std::int64_t Min, std::int64_t Max>
+// A field at byte `wire`: joins the current run, starts one, or is decoded on
+// its own (P: prechecked, or prechecked_unset for unset storage).
+template <class S, std::int64_t Min, std::int64_t Max, class P>
 ROBOWIRE_ALWAYS_INLINE void copy_or_decode(unsigned char* obj, typename S::member_type& member, in_bytes in,
                                            std::size_t wire, run& r) noexcept {
     const std::size_t size = copy_size<S>(member);
@@ -203,7 +231,7 @@ ROBOWIRE_ALWAYS_INLINE void copy_or_decode(unsigned char* obj, typename S::membe
     } else {
         flush(obj, in, r);
         r = {};
-        prechecked none{};
+        P none{};
         (void)decode_field<S, Min, Max>(member, in, wire, none);
     }
 }
@@ -214,7 +242,7 @@ template <class S, std::int64_t Min, std::int64_t Max, class Err>
 ROBOWIRE_ALWAYS_INLINE bool copy_or_check(unsigned char* obj, typename S::member_type& member, in_bytes in,
                                           std::size_t wire, run& r, Err& err) noexcept {
     if constexpr (unchecked_field<S, Min, Max>()) {
-        copy_or_decode<S, Min, Max>(obj, member, in, wire, r);
+        copy_or_decode<S, Min, Max, prechecked_t<Err>>(obj, member, in, wire, r);
         return true;
     } else {
         flush(obj, in, r);
@@ -231,7 +259,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, in_bytes in, std::size
         if (!ROBOWIRE_CONSTANT_EVALUATED()) {
             const auto obj = reinterpret_cast<unsigned char*>(&m);
             run r{};
-            (copy_or_decode<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(
+            (copy_or_decode<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max, Err>(
                  obj, m.*(field_v<M, I>.member), in, base + field_v<M, I>.offset, r),
              ...);
             flush(obj, in, r);
