@@ -335,4 +335,15 @@ template <described M>
 }
 }  // namespace ROBOWIRE_MODE_NAMESPACE
 
+namespace codec::inline ROBOWIRE_MODE_NAMESPACE {
+// decode<M>, with the input as pointer and size: for a codec that calls a
+// decode from several places, so that where the compiler keeps it out of line
+// its callers pass two registers (a span passed by value is copied through
+// the stack first).
+template <described M>
+[[nodiscard]] constexpr result<M> decode_at(const std::uint8_t* data, std::size_t size) noexcept {
+    return robowire::decode<M>(std::span<const std::uint8_t>(data, size));
+}
+}  // namespace codec::inline ROBOWIRE_MODE_NAMESPACE
+
 }  // namespace robowire

@@ -59,7 +59,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr result<Message> decode_command(const Frame& f,
         if constexpr (I != any) {
             using alternative = std::variant_alternative_t<I, Message>;
             if (f.command == command_of<alternative>()) {
-                const auto m = robowire::decode<alternative>(in);
+                const auto m = codec::decode_at<alternative>(in.data(), in.size());
                 if (!m) return codec::unchecked_error(m);
                 return result<Message>(std::in_place, *m);
             }
@@ -76,7 +76,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr result<Message> decode_command(const Frame& f,
 inline namespace ROBOWIRE_MODE_NAMESPACE {
 template <class Message = message>
 [[nodiscard]] constexpr result<Message> decode_frame(std::span<const std::uint8_t> in) noexcept {
-    const auto f = robowire::decode<std::variant_alternative_t<impl::any_command_index_v<Message>, Message>>(in);
+    const auto f =
+        codec::decode_at<std::variant_alternative_t<impl::any_command_index_v<Message>, Message>>(in.data(), in.size());
     if (!f) return codec::unchecked_error(f);
     return impl::decode_command<Message, 0>(*f, in);
 }

@@ -140,11 +140,11 @@ template <class Deferred = void>
 [[nodiscard]] constexpr result<maneuver> decode_maneuver(std::span<const std::uint8_t> in,
                                                          sign_encoding enc = sign_encoding::twos_complement) noexcept {
     if (enc == sign_encoding::twos_complement || in.size() != frame_size)
-        return robowire::decode<maneuver>(codec::deferred<Deferred>(in));
+        return codec::decode_at<maneuver>(codec::deferred<Deferred>(in).data(), in.size());
     std::array<std::uint8_t, frame_size> copy{};
     for (std::size_t i = 0; i < frame_size; ++i) copy[i] = in[i];
     impl::convert_signed<false, Deferred>(copy);
-    return robowire::decode<maneuver>(codec::deferred<Deferred>(std::span<const std::uint8_t>(copy)));
+    return codec::decode_at<maneuver>(codec::deferred<Deferred>(copy).data(), copy.size());
 }
 }  // namespace ROBOWIRE_MODE_NAMESPACE
 

@@ -181,7 +181,7 @@ template <std::size_t Capacity>
 class reassembler {
 public:
     constexpr result<reassembly> push(std::span<const std::uint8_t> frame_bytes) noexcept {
-        const auto f = robowire::decode<frame>(codec::deferred<reassembler>(frame_bytes));
+        const auto f = codec::decode_at<frame>(codec::deferred<reassembler>(frame_bytes).data(), frame_bytes.size());
         if (!f) return codec::unchecked_error(f);
         return push(*f);
     }
