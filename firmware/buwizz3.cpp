@@ -8,11 +8,13 @@ namespace bw = robowire::buwizz3;
 
 ENTRY void buwizz3_decode_command(const std::uint8_t* p, std::size_t n) {
     const auto c = bw::decode_command({p, n});
-    sink = c ? static_cast<std::uint32_t>(c->index()) : static_cast<std::uint32_t>(c.code());
+    if (c) out(std::span(reinterpret_cast<const std::uint8_t*>(&*c), sizeof *c));  // every field
+    else sink = static_cast<std::uint32_t>(c.code());
 }
 ENTRY void buwizz3_decode_notification(const std::uint8_t* p, std::size_t n) {
     const auto r = bw::decode_notification({p, n});
-    sink = r ? static_cast<std::uint32_t>(r->index()) : static_cast<std::uint32_t>(r.code());
+    if (r) out(std::span(reinterpret_cast<const std::uint8_t*>(&*r), sizeof *r));  // every field
+    else sink = static_cast<std::uint32_t>(r.code());
 }
 ENTRY void buwizz3_encode_command(const std::uint8_t* p, std::size_t n) {
     // a command built from input bytes, then encoded

@@ -58,8 +58,6 @@ inline void wr32(std::uint8_t* p, std::uint32_t v) {
 }
 inline void wrf(std::uint8_t* p, float f) { std::memcpy(p, &f, 4); }
 inline void report(error e) { sink = static_cast<std::uint32_t>(e.code | e.offset << 8); }
-inline void out(const std::uint8_t* p, std::size_t n) {
-    for (std::size_t i = 0; i < n; ++i) sink = p[i];
-}
+[[gnu::always_inline]] inline void out(const std::uint8_t* p, std::size_t n) { out_bytes(p, n); }
 
 }  // namespace hw

@@ -254,12 +254,14 @@ HW_CODEC hw::error decode_notification(const std::uint8_t* p, std::size_t n, not
 ENTRY void hw_buwizz3_decode_command(const std::uint8_t* p, std::size_t n) {
     command c;
     const auto e = decode_command(p, n, c);
-    sink = e.code ? static_cast<std::uint32_t>(e.code) : c.kind;
+    if (e.code == 0) hw::out(reinterpret_cast<const std::uint8_t*>(&c), sizeof c);  // every field
+    else sink = e.code;
 }
 ENTRY void hw_buwizz3_decode_notification(const std::uint8_t* p, std::size_t n) {
     notification m;
     const auto e = decode_notification(p, n, m);
-    sink = e.code ? static_cast<std::uint32_t>(e.code) : m.kind;
+    if (e.code == 0) hw::out(reinterpret_cast<const std::uint8_t*>(&m), sizeof m);  // every field
+    else sink = e.code;
 }
 ENTRY void hw_buwizz3_encode_command(const std::uint8_t* p, std::size_t n) {
     command c;

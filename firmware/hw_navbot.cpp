@@ -152,8 +152,10 @@ ENTRY void hw_navbot_decode_frame(const std::uint8_t* p, std::size_t n) {
     maneuver m;
     auto e = decode_frame(p, n, f);
     if (e.code == 0 && f.command == 0x10) e = decode_maneuver(p, n, false, m);
-    sink = e.code ? static_cast<std::uint32_t>(e.code) : f.command;
-    if (decode_maneuver(p, n, true, m).code == 0) sink = static_cast<std::uint32_t>(m.pitch);
+    if (e.code != 0) sink = e.code;  // every field of what was decoded
+    else if (f.command == 0x10) hw::out(reinterpret_cast<const std::uint8_t*>(&m), sizeof m);
+    else hw::out(reinterpret_cast<const std::uint8_t*>(&f), sizeof f);
+    if (decode_maneuver(p, n, true, m).code == 0) hw::out(reinterpret_cast<const std::uint8_t*>(&m), sizeof m);
 }
 reassembler reassembler_state;
 ENTRY void hw_navbot_reassemble(const std::uint8_t* p, std::size_t n) {

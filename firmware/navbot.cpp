@@ -19,9 +19,10 @@ ENTRY void navbot_encode_maneuver(const std::uint8_t* b) {
 ENTRY void navbot_decode_frame(const std::uint8_t* p, std::size_t n) {
     const std::span b(p, n);
     const auto m = nb::decode_frame(b);
-    sink = m ? static_cast<std::uint32_t>(m->index()) : static_cast<std::uint32_t>(m.code());
+    if (m) out(std::span(reinterpret_cast<const std::uint8_t*>(&*m), sizeof *m));  // every field
+    else sink = static_cast<std::uint32_t>(m.code());
     const auto sm = nb::decode_maneuver(b, nb::sign_encoding::sign_magnitude);
-    if (sm) sink = static_cast<std::uint32_t>(sm->pitch);
+    if (sm) out(std::span(reinterpret_cast<const std::uint8_t*>(&*sm), sizeof *sm));
 }
 nb::reassembler<120> reassembler_state;
 ENTRY void navbot_reassemble(const std::uint8_t* p, std::size_t n) {
