@@ -68,10 +68,10 @@ struct scanner {
     void resync() {
         do {
             ++false_starts;
-            std::uint8_t from = 1;
+            std::size_t from = 1;  // word-sized indices: no zero-extension per step
             while (from < len && buf[from] != 0xFF) ++from;
             skipped += from;
-            for (std::uint8_t k = from; k < len; ++k) buf[k - from] = buf[k];
+            for (std::size_t k = from; k < len; ++k) buf[k - from] = buf[k];
             len = static_cast<std::uint8_t>(len - from);
         } while (!partial_ok());
     }
