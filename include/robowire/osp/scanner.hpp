@@ -347,13 +347,26 @@ private:
             std::size_t from = 1;
             while (from < len_ && buf_[from] != start1) ++from;
             skipped_ += from;  // the dropped bytes
-            for (std::size_t k = from; k < len_; ++k) buf_[k - from] = buf_[k];
+            if (!ROBOWIRE_OPTIMIZE_SIZE && !ROBOWIRE_CONSTANT_EVALUATED()) {
+                if (from != len_) {  // bytes left: fixed-size copies, read first
+                    std::uint64_t lo;
+                    std::uint16_t hi;
+                    std::memcpy(&lo, buf_.data() + from, sizeof lo);
+                    std::memcpy(&hi, buf_.data() + from + sizeof lo, sizeof hi);
+                    std::memcpy(buf_.data(), &lo, sizeof lo);
+                    std::memcpy(buf_.data() + sizeof lo, &hi, sizeof hi);
+                }
+            } else {
+                for (std::size_t k = from; k < len_; ++k) buf_[k - from] = buf_[k];
+            }
             len_ -= from;
             if (partial_ok()) return;
         }
     }
 
-    std::array<std::uint8_t, frame_size> buf_{};
+    // The candidate, and room for resync()'s fixed-size copies (from
+    // buf_[9] at most, 10 bytes) where they are used.
+    std::array<std::uint8_t, ROBOWIRE_OPTIMIZE_SIZE ? frame_size : 2 * frame_size - 1> buf_{};
     std::size_t len_ = 0;
     std::uint64_t frames_ = 0, skipped_ = 0, false_starts_ = 0;
 };
