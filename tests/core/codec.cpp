@@ -92,6 +92,21 @@ TEST_CASE("codec: fixed bytes and fields, as a dispatcher checks and decodes the
     }());
 }
 
+// decode_at<M>(pointer, size): decode<M> of the same bytes, errors included;
+// only `size` bytes are read (the byte after them is not part of the input).
+TEST_CASE("codec::decode_at decodes pointer and size as decode does a span", "[core][codec]") {
+    constexpr std::array<std::uint8_t, 5> in{0xA5, 0x02, 0x18, 0xFC, 0x99};  // pong -1000, then a byte not passed
+    STATIC_REQUIRE(codec::decode_at<demo3::pong>(in.data(), 4).value() == demo3::pong{-1000});
+    STATIC_REQUIRE(codec::decode_at<demo3::pong>(in.data(), 3).error() == error{errc::too_short, 3});
+    STATIC_REQUIRE(codec::decode_at<demo3::pong>(in.data(), 5).error() == error{errc::too_long, 4});
+    STATIC_REQUIRE(codec::decode_at<demo3::ping>(in.data(), 3).error() == error{errc::bad_command, 1});
+    const auto bad = test::hex("A5 02 E9 03");  // 1001: out of range
+    CHECK(codec::decode_at<demo3::pong>(bad.data(), bad.size()).error() == error{errc::value_out_of_range, 2});
+    CHECK(codec::decode_at<demo3::pong>(bad.data(), bad.size()).error() ==
+          decode<demo3::pong>(std::span(bad)).error());
+    CHECK(codec::decode_at<demo3::pong>(in.data(), 4).value() == demo3::pong{-1000});
+}
+
 TEST_CASE("codec: check_fields then store_fields, as an encoder writes a frame", "[core][codec]") {
     STATIC_REQUIRE(store(demo3::pong{-2}).value() == test::hex("00 00 FE FF"));
     STATIC_REQUIRE(store(demo3::pong{1001}).error() == error{errc::value_out_of_range, 2});

@@ -91,10 +91,12 @@ int failures() {
 // 2 decode<status>, 3 decode_into<status> (an error must leave the object as
 // it was), 4 and 5 a NAVBOT maneuver in each sign encoding, 6 decode_frame,
 // 7 OSP.
+inline std::string error_text(robowire::error e) {
+    return "E" + std::to_string(static_cast<int>(e.code)) + "@" + std::to_string(e.offset);
+}
 template <class R>
 std::string error_text(const R& r) {
-    const robowire::error e = robowire::codec::unchecked_error(r);
-    return "E" + std::to_string(static_cast<int>(e.code)) + "@" + std::to_string(e.offset);
+    return error_text(robowire::codec::unchecked_error(r));
 }
 template <class W>
 std::string encoded_text(const W& w) {
@@ -123,8 +125,7 @@ std::string outcome(int which, std::span<const std::uint8_t> in) {
         const bw::status before = s;
         const robowire::error e = robowire::decode_into(s, in);
         if (e.code != robowire::errc::ok)
-            return "E" + std::to_string(static_cast<int>(e.code)) + "@" + std::to_string(e.offset) +
-                   (s == before ? "" : " changed");
+            return error_text(e) + (s == before ? "" : " changed");
         return encoded_text(robowire::encode(s)) + (s.pid_state ? "+pid" : "") +
                std::to_string(s.ignored_trailing_bytes);
     }
