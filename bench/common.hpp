@@ -54,6 +54,14 @@ void in_memory(T& object) {
     benchmark::DoNotOptimize(p);
 }
 
+// A frame as its receiver gets it: bytes in memory that the compiler did not
+// see written (a BLE stack's buffer), so the receiver's checks of the bytes
+// the sender wrote as constants are not folded away.
+template <class T>
+void received(T& frame) {
+    benchmark::DoNotOptimize(frame);
+}
+
 // Reads a small result the way a caller does: branches on the outcome, then
 // reads the value, or the error of a failure (as consume(hw::error) reads the
 // baselines'). Each is read before its DoNotOptimize: the memory clobber would

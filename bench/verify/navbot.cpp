@@ -49,7 +49,56 @@ static void set(nb::maneuver& m, std::size_t k, int v) {
     default: m.ball_y = s; break;
     }
 }
+// The bench's receivers (handwritten and careful) against robowire's
+// reassembler on the same stream of frames: the same outcome or error at
+// every push, the same payload when a message completes. The stream is mostly
+// messages of 1-16 frames counting down, with frames lost, repeated, of
+// another command, cut short or too long, or with a broken header.
+template <class Hw>
+static void check_reassembly(const char* what, std::uint32_t seed) {
+    bench::rng rr{seed};
+    nb::reassembler<210> r;
+    Hw h{};
+    int remaining = -1;
+    std::uint8_t command = 2;
+    for (int k = 0; k < 20000; ++k) {
+        std::array<std::uint8_t, 22> b{};
+        for (auto& x : b) x = rr.byte();
+        if (remaining < 0 || rr.next() % 16 == 0) {  // a new message (another command now and then)
+            command = static_cast<std::uint8_t>(rr.next() % 4 == 0 ? 1 + rr.next() % 3 : 2);
+            remaining = static_cast<int>(rr.next() % 16);
+        }
+        b[0] = 0x55;
+        b[1] = 0xAA;
+        b[2] = command;
+        b[3] = static_cast<std::uint8_t>(remaining);
+        std::size_t n = 20;
+        switch (rr.next() % 32) {
+        case 0: b[rr.next() % 2] ^= 0x01; break;                         // broken header
+        case 1: n = rr.next() % 23; break;                                // any length
+        case 2: --remaining; break;                                       // a frame lost before this one
+        case 3: b[3] = static_cast<std::uint8_t>(rr.next() % 20); break;  // any remaining
+        default: break;
+        }
+        b[3] = remaining < 0 ? 0 : b[3];
+        const auto re = r.push(std::span<const std::uint8_t>(b.data(), n));
+        const pushed he = h.push(b.data(), n);
+        const std::string ctx = "frame " + std::to_string(k);
+        if (!same_err(what, rw_err(re), static_cast<bench::hw::error>(he.error | he.at << 8), ctx) || !re) continue;
+        if (static_cast<int>(*re) != static_cast<int>(he.what)) {
+            mismatch(what, ctx + " outcome");
+            continue;
+        }
+        if (*re == nb::reassembly::complete &&
+            (r.payload().size() != h.size || std::memcmp(r.payload().data(), h.buf, h.size) != 0))
+            mismatch(what, ctx + " payload");
+        if (rr.next() % 8 != 0) --remaining;  // else the same frame again (a repeat)
+    }
+}
+
 int main() {
+    check_reassembly<hw_reassembler<210>>("reassembly handwritten", 1);
+    check_reassembly<hw_reassembler<210, true>>("reassembly careful", 2);
     bench::rng rr;
     const auto frames = maneuver_frames();
     for (std::size_t v = 0; v < frames.size(); ++v) {
