@@ -198,7 +198,7 @@ void scan_robowire(benchmark::State& state, kind k) {
 // holds, which the usual state machine, restarting at the current byte,
 // does not), and it counts frames, skipped bytes and false starts.
 struct state_machine {
-    std::uint8_t buf[10] = {};
+    std::uint8_t buf[19] = {};  // room for resync()'s fixed-size copies (from buf[9] at most)
     std::size_t n = 0;
     std::uint64_t frames = 0, skipped = 0, false_starts = 0;
     template <class F>
@@ -229,7 +229,14 @@ struct state_machine {
             std::size_t from = 1;
             while (from < n && buf[from] != 0xFF) ++from;
             skipped += from;
-            std::memmove(buf, buf + from, n - from);
+            if (from != n) {  // bytes left: one 8-byte and one 2-byte copy, both read first
+                std::uint64_t lo;
+                std::uint16_t hi;
+                std::memcpy(&lo, buf + from, 8);
+                std::memcpy(&hi, buf + from + 8, 2);
+                std::memcpy(buf, &lo, 8);
+                std::memcpy(buf + 8, &hi, 2);
+            }
             n -= from;
         } while ((n >= 2 && buf[1] != 0xAA) || (n >= 9 && buf[8] != 0x55));
     }

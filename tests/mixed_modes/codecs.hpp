@@ -90,7 +90,7 @@ int failures() {
 // error). `which` picks the codec: 0 BuWizz3 commands, 1 notifications,
 // 2 decode<status>, 3 decode_into<status> (an error must leave the object as
 // it was), 4 and 5 a NAVBOT maneuver in each sign encoding, 6 decode_frame,
-// 7 OSP.
+// 7 OSP, 8 a stream of NAVBOT frames through a reassembler.
 inline std::string error_text(robowire::error e) {
     return "E" + std::to_string(static_cast<int>(e.code)) + "@" + std::to_string(e.offset);
 }
@@ -108,6 +108,51 @@ std::string variant_text(const R& r) {
     if (!r) return error_text(r);
     return std::visit([&](const auto& m) { return std::to_string(r->index()) + ":" + encoded_text(robowire::encode(m)); },
                       *r);
+}
+// A stream of 60 NAVBOT frames made from the input's bytes through a
+// reassembler: each push's outcome or error, and each completed payload.
+// Mostly messages counting down (the speed file takes their next frames in
+// place), with frames lost, repeated, of another command, cut short or with
+// a broken header.
+inline std::string reassembly_text(std::span<const std::uint8_t> in) {
+    std::uint32_t state = 2166136261u;  // FNV-1a of the input: the stream's seed
+    for (const std::uint8_t b : in) state = (state ^ b) * 16777619u;
+    const auto next = [&] {
+        state ^= state << 13;
+        state ^= state >> 17;
+        state ^= state << 5;
+        return state;
+    };
+    nb::reassembler<60> r;
+    std::string out;
+    int remaining = -1;
+    std::uint8_t command = 2;
+    std::array<std::uint8_t, 22> b{};
+    bool repeat = false;
+    for (int k = 0; k < 60; ++k) {
+        if (!repeat && (remaining < 0 || next() % 16 == 0)) {
+            command = static_cast<std::uint8_t>(next() % 4 == 0 ? 1 + next() % 3 : 2);
+            remaining = static_cast<int>(next() % 6);
+        }
+        if (!repeat) {  // a repeat sends the last frame's bytes again
+            for (auto& x : b) x = static_cast<std::uint8_t>(next());
+            b[0] = 0x55, b[1] = 0xAA, b[2] = command, b[3] = static_cast<std::uint8_t>(remaining);
+        }
+        std::size_t n = 20;
+        switch (next() % 32) {
+        case 0: b[next() % 2] ^= 0x01; break;
+        case 1: n = next() % 23; break;
+        case 2: b[3] = static_cast<std::uint8_t>(next() % 8); break;
+        default: break;
+        }
+        const auto st = r.push(std::span<const std::uint8_t>(b.data(), n));
+        out += st ? std::to_string(static_cast<int>(*st)) : error_text(st);
+        if (st && *st == nb::reassembly::complete) out += "=" + std::string(r.text());
+        out += ",";
+        repeat = next() % 8 == 0;
+        if (!repeat) --remaining;
+    }
+    return out;
 }
 std::string outcome(int which, std::span<const std::uint8_t> in) {
     switch (which) {
@@ -136,7 +181,8 @@ std::string outcome(int which, std::span<const std::uint8_t> in) {
         return r ? encoded_text(nb::encode(*r, enc)) : error_text(r);
     }
     case 6: return variant_text(nb::decode_frame(in));
-    default: return variant_text(osp::decode(in));
+    case 7: return variant_text(osp::decode(in));
+    default: return reassembly_text(in);
     }
 }
 

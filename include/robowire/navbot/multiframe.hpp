@@ -181,6 +181,14 @@ template <std::size_t Capacity>
 class reassembler {
 public:
     constexpr result<reassembly> push(std::span<const std::uint8_t> frame_bytes) noexcept {
+        if constexpr (!ROBOWIRE_OPTIMIZE_SIZE) {
+            if (!ROBOWIRE_CONSTANT_EVALUATED() && state_ == state::collecting && frame_bytes.size() == frame_size &&
+                codec::fixed_bytes_match<frame>(codec::deferred<reassembler>(frame_bytes))) {
+                const std::uint8_t* p = frame_bytes.data();
+                if (p[2] == command_ && p[3] + 1 == last_remaining_) [[likely]]
+                    return append_in_place(p);
+            }
+        }
         const auto f = codec::decode_at<frame>(codec::deferred<reassembler>(frame_bytes).data(), frame_bytes.size());
         if (!f) return codec::unchecked_error(f);
         return push(*f);
@@ -278,6 +286,24 @@ private:
         last_remaining_ = f.remaining;
         state_ = f.remaining == 0 ? state::complete : state::collecting;
         return f.remaining == 0 ? reassembly::complete : reassembly::need_more;
+    }
+    // The next frame of the message being collected, from its bytes: what
+    // push(frame) does with it. While collecting, a message being discarded
+    // has another command (skip() follows the start of another command, or
+    // leaves the state idle), and the last frame remembered is the last one
+    // appended (its `remaining` is last_remaining_) or one of the discarded
+    // command: neither a repeat nor a frame to discard can be this one.
+    result<reassembly> append_in_place(const std::uint8_t* p) noexcept {
+        const std::uint8_t remaining = p[3];
+        std::memcpy(buf_.data() + size_, p + 5, payload_size);
+        size_ += payload_size;  // more than one frame's: remembered
+        has_last_ = true;
+        last_.command = p[2];
+        last_.remaining = remaining;
+        std::memcpy(last_.payload.data(), p + 5, payload_size);
+        last_remaining_ = remaining;
+        state_ = remaining == 0 ? state::complete : state::collecting;
+        return remaining == 0 ? reassembly::complete : reassembly::need_more;
     }
     constexpr void drop() noexcept {
         state_ = state::idle;
