@@ -206,7 +206,7 @@ template <std::size_t Capacity, bool Careful = false>
 struct hw_reassembler {
     std::uint8_t buf[Capacity];
     std::size_t size;
-    std::uint8_t last_remaining, command;
+    std::uint8_t command, last_remaining;
     std::uint8_t state;  // 0 idle, 1 collecting, 2 complete
     bool has_last, skipping;
     std::uint8_t skip_command;
@@ -242,8 +242,10 @@ struct hw_reassembler {
             // the discard test cannot hit here; and the last frame remembered is
             // either the last one appended (remaining == last_remaining, not
             // rem) or one of the discarded command: never a repeat of this one.
+            // Command and remaining against command and last_remaining - 1 as one word.
             const std::uint8_t c = p[2], rem = p[3];
-            if (state == 1 && c == command && rem + 1u == last_remaining) [[likely]] {
+            const int key = std::endian::native == std::endian::little ? load16(p + 2) : (c | rem << 8);
+            if (state == 1 && key + 0x100 == (command | last_remaining << 8)) [[likely]] {
                 std::memcpy(buf + size, p + 5, 15);
                 size += 15;
                 has_last = true;  // size > 15: remembered

@@ -6,7 +6,9 @@
 //    last frame with other bytes), lost frames. Whenever the reassembler says
 //    `complete` for the message's command, the payload is the whole message:
 //    never a truncated one. A second reassembler, of 4 frames, gets the same
-//    frames: it completes the message only when it has at most 4 frames.
+//    frames: it completes the message only when it has at most 4 frames. A
+//    third gets each frame decoded (push(frame)): its outcomes, errors and
+//    payload are the first one's (push of the bytes).
 // 3. The whole input, fragmented as one payload (make_frames refuses more than
 //    max_payload bytes), reassembles to itself, and
 //    json_object() never accepts text that does not start with '{' and end with '}'.
@@ -66,8 +68,15 @@ void message_with_traffic(std::span<const std::uint8_t> in) {
     bool lost = false;     // a frame was lost: outcomes are no longer predicted, completions still checked
     bool completed = false;
     nb::reassembler<60> small;  // room for 4 frames
+    nb::reassembler<nb::max_payload> by_frame;  // the same frames decoded first: push(frame) as push(bytes)
     const auto push = [&](const robowire::bytes<nb::frame_size>& f) {
         const auto st = rx.push(f);
+        const auto decoded = robowire::decode<nb::frame>(f);
+        FUZZ_CHECK(decoded.has_value());
+        const auto st_frame = by_frame.push(*decoded);
+        FUZZ_CHECK(st.has_value() == st_frame.has_value());
+        FUZZ_CHECK(st ? *st == *st_frame : st.error() == st_frame.error());
+        FUZZ_CHECK(fuzz::same_bytes(rx.payload(), by_frame.payload()) && rx.in_progress() == by_frame.in_progress());
         if (st && *st == nb::reassembly::complete && rx.command() == cmd) {
             FUZZ_CHECK(rx.payload().size() == whole.size());  // whole, never a tail
             FUZZ_CHECK(fuzz::same_bytes(rx.payload(), whole));

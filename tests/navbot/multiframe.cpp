@@ -25,6 +25,13 @@ constexpr std::size_t frames_of_json(std::string_view text) {
     const auto f = json_frames(text);
     return f ? f->size() : 0;
 }
+// Frame k of the text's frames, reached by iterating (k++ then ++k).
+constexpr bytes<frame_size> iterated_frame(std::string_view text, std::size_t k) {
+    const auto f = json_frames(text).value();
+    auto it = f.begin();
+    for (std::size_t i = 0; i < k; ++i) (i % 2 == 0) ? void(it++) : void(++it);
+    return *it;
+}
 }  // namespace
 
 TEST_CASE("navbot: fragmenter golden frames", "[navbot][multiframe]") {
@@ -41,6 +48,20 @@ TEST_CASE("navbot: fragmenter golden frames", "[navbot][multiframe]") {
     STATIC_REQUIRE(frames_of_json(R"({"type":"get_device_info"})") == 2);  // 26 chars
     STATIC_REQUIRE(json_frames(R"({"a":1})").value()[0] ==
                    test::hex("55 AA 02 00 00 7B 22 61 22 3A 31 7D 00 00 00 00 00 00 00 00"));
+    // the same frames by iteration, here and in a constant expression
+    std::vector<bytes<frame_size>> seen(frames.begin(), frames.end());
+    REQUIRE(seen.size() == 2);
+    CHECK(seen[0] == test::hex("55 AA 02 01 00 01 02 03 04 05 06 07 08 09 0A 0B 0C 0D 0E 0F"));
+    CHECK(seen[1] == test::hex("55 AA 02 00 00 10 00 00 00 00 00 00 00 00 00 00 00 00 00 00"));
+    CHECK(std::next(empty.begin()) == empty.end());
+    CHECK(*empty.begin() == test::hex("55 AA 01 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00"));
+    // 31 characters: 15 + 15 + 1
+    constexpr std::string_view text31 = R"({"type":"get_device_info","x":})";
+    STATIC_REQUIRE(text31.size() == 31);
+    STATIC_REQUIRE(iterated_frame(text31, 1) ==
+                   test::hex("55 AA 02 01 00 76 69 63 65 5F 69 6E 66 6F 22 2C 22 78 22 3A"));
+    STATIC_REQUIRE(iterated_frame(text31, 2) ==
+                   test::hex("55 AA 02 00 00 7D 00 00 00 00 00 00 00 00 00 00 00 00 00 00"));
     STATIC_REQUIRE((frames_for(0) == 1 && frames_for(15) == 1 && frames_for(16) == 2 && frames_for(3840) == 256));
     std::vector<std::uint8_t> too_big(max_payload + 1);
     CHECK(make_frames(command::wifi, too_big).error() == error{errc::capacity_exceeded, max_payload});
@@ -56,6 +77,7 @@ TEST_CASE("navbot: fragment then reassemble, many lengths", "[navbot][multiframe
         std::size_t i = 0;
         for (const auto& f : frames) {
             CHECK(f[3] == frames.size() - 1 - i);  // remaining counts down to 0
+            CHECK(f == frames[i]);                  // iteration and indexing agree
             const auto st = r.push(f);
             REQUIRE(st);
             CHECK(*st == (i + 1 == frames.size() ? reassembly::complete : reassembly::need_more));

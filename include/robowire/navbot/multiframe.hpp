@@ -41,53 +41,67 @@ public:
 
     constexpr std::size_t size() const noexcept { return frames_for(payload_.size()); }
     // Frame i (0-based). Precondition: i < size().
-    constexpr bytes<frame_size> operator[](std::size_t i) const noexcept { return frame_at(i, size()); }
+    constexpr bytes<frame_size> operator[](std::size_t i) const noexcept {
+        const std::size_t from = i * payload_size;
+        return make_frame(command_, static_cast<std::uint8_t>(size() - 1 - i), payload_.data() + from,
+                          from < payload_.size() ? payload_.size() - from : 0);
+    }
 
+    // Holds its own position, command and frame count (not a pointer to the
+    // fragmenter): a loop that hands each frame to a driver keeps them in registers.
     class iterator {
     public:
         using value_type = bytes<frame_size>;
         using difference_type = std::ptrdiff_t;
         constexpr iterator() noexcept = default;
-        constexpr iterator(const basic_fragmenter* f, std::size_t i) noexcept : f_(f), i_(i), n_(f ? f->size() : 0) {}
-        constexpr value_type operator*() const noexcept { return f_->frame_at(i_, n_); }
+        constexpr value_type operator*() const noexcept {
+            return make_frame(command_, static_cast<std::uint8_t>(frames_ - 1), next_, left_);
+        }
         constexpr iterator& operator++() noexcept {
-            ++i_;
+            const std::size_t step = left_ < payload_size ? left_ : payload_size;
+            next_ += step;
+            left_ -= step;
+            --frames_;
             return *this;
         }
         constexpr iterator operator++(int) noexcept {
             auto t = *this;
-            ++i_;
+            ++*this;
             return t;
         }
-        friend constexpr bool operator==(const iterator& a, const iterator& b) noexcept { return a.i_ == b.i_; }
+        friend constexpr bool operator==(const iterator& a, const iterator& b) noexcept {
+            return a.frames_ == b.frames_;
+        }
 
     private:
-        const basic_fragmenter* f_ = nullptr;
-        std::size_t i_ = 0;
-        std::size_t n_ = 0;  // f_->size(), worked out once
+        friend class basic_fragmenter;
+        constexpr iterator(const Byte* next, std::size_t left, std::size_t frames, std::uint8_t command) noexcept
+            : next_(next), left_(left), frames_(frames), command_(command) {}
+        const Byte* next_ = nullptr;  // payload of this frame
+        std::size_t left_ = 0;        // payload bytes from next_ on
+        std::size_t frames_ = 0;      // frames from this one on (0: end)
+        std::uint8_t command_ = 0;
     };
-    constexpr iterator begin() const noexcept { return {this, 0}; }
-    constexpr iterator end() const noexcept { return {this, size()}; }
+    constexpr iterator begin() const noexcept { return {payload_.data(), payload_.size(), size(), command_}; }
+    constexpr iterator end() const noexcept { return {}; }
 
 private:
     constexpr basic_fragmenter(std::uint8_t command, std::span<const Byte> payload) noexcept
         : command_(command), payload_(payload) {}
-    // Frame i of `count` (size()).
-    constexpr bytes<frame_size> frame_at(std::size_t i, std::size_t count) const noexcept {
+    // A frame whose payload is the first min(left, 15) bytes at `from`, zero-padded.
+    static constexpr bytes<frame_size> make_frame(std::uint8_t command, std::uint8_t remaining, const Byte* from,
+                                                  std::size_t left) noexcept {
         auto out = bytes<frame_size>::zeros(frame_size);
         out[0] = header1;
         out[1] = header2;
-        out[2] = command_;
-        out[3] = static_cast<std::uint8_t>(count - 1 - i);
-        const std::size_t from = i * payload_size;
+        out[2] = command;
+        out[3] = remaining;
         if (ROBOWIRE_CONSTANT_EVALUATED() || ROBOWIRE_OPTIMIZE_SIZE) {
-            for (std::size_t k = 0; k < payload_size && from + k < payload_.size(); ++k)
-                out[5 + k] = static_cast<std::uint8_t>(payload_[from + k]);
-        } else if (from + payload_size <= payload_.size()) {  // a whole frame's payload: a constant-size copy
-            std::memcpy(out.data() + 5, payload_.data() + from, payload_size);
+            for (std::size_t k = 0; k < payload_size && k < left; ++k) out[5 + k] = static_cast<std::uint8_t>(from[k]);
+        } else if (left >= payload_size) {  // a whole frame's payload: a constant-size copy
+            std::memcpy(out.data() + 5, from, payload_size);
         } else {  // the last frame's: two fixed-size copies, not a byte loop that checks the end at every byte
-            const std::size_t left = from < payload_.size() ? payload_.size() - from : 0;
-            codec::copy_small(out.data() + 5, reinterpret_cast<const std::uint8_t*>(payload_.data() + from), left);
+            codec::copy_small(out.data() + 5, reinterpret_cast<const std::uint8_t*>(from), left);
         }
         return out;
     }
@@ -185,49 +199,16 @@ public:
             if (!ROBOWIRE_CONSTANT_EVALUATED() && state_ == state::collecting && frame_bytes.size() == frame_size &&
                 codec::fixed_bytes_match<frame>(codec::deferred<reassembler>(frame_bytes))) {
                 const std::uint8_t* p = frame_bytes.data();
-                if (p[2] == command_ && p[3] + 1 == last_remaining_) [[likely]]
+                // command and remaining against command_ and last_remaining_ - 1, as one 16-bit word
+                if (load_le<std::uint16_t>(p + 2) + 0x100 == (command_ | last_remaining_ << 8)) [[likely]]
                     return append_in_place(p);
             }
         }
         const auto f = codec::decode_at<frame>(codec::deferred<reassembler>(frame_bytes).data(), frame_bytes.size());
-        if (!f) return codec::unchecked_error(f);
-        return push(*f);
+        return to_result(f ? take(*f) : codec::unchecked_error(f));
     }
 
-    constexpr result<reassembly> push(const frame& f) noexcept {
-        if (has_last_ && f == last_) return reassembly::duplicate;  // a completed message stays readable
-        if (state_ == state::complete) {
-            state_ = state::idle;
-            size_ = 0;
-        }
-        if (skipping_ && f.command == skip_command_) {
-            if (f.remaining == 0) skipping_ = false;
-            remember(f);  // so that a repeat of it is not taken for a new message
-            return reassembly::discarded;
-        }
-        if (state_ == state::idle) return start(f);
-        // collecting
-        if (f.command != command_) {
-            if (f.remaining == 0) return reassembly::single;
-            const auto broken = command_;
-            const auto st = start(f);
-            if (!st) return st;
-            skip(broken);  // the rest of the broken message
-            return fail(errc::command_changed, 2);
-        }
-        if (f.remaining >= last_remaining_) {  // the sender started over
-            const auto st = start(f);
-            if (!st) return st;
-            return reassembly::restarted;
-        }
-        if (f.remaining + 1 != last_remaining_) {  // frames lost
-            drop();
-            remember(f);
-            if (f.remaining != 0) skip(f.command);
-            return fail(errc::bad_sequence, 3);
-        }
-        return append(f);
-    }
+    constexpr result<reassembly> push(const frame& f) noexcept { return to_result(take(f)); }
 
     // The completed message (valid after push returned `complete`, until the next push).
     constexpr std::uint8_t command() const noexcept { return command_; }
@@ -257,8 +238,47 @@ public:
 private:
     enum class state : std::uint8_t { idle, collecting, complete };
 
+    // An outcome as take() returns it: errc::ok, the outcome in the offset.
+    static constexpr error outcome(reassembly r) noexcept { return {errc::ok, static_cast<std::uint16_t>(r)}; }
+    static constexpr result<reassembly> to_result(error e) noexcept {
+        if (e.code != errc::ok) return e;
+        return static_cast<reassembly>(e.offset);
+    }
+    // push(frame)'s work; its outcome as one word (a register on every target).
+    constexpr error take(const frame& f) noexcept {
+        if (has_last_ && f == last_) return outcome(reassembly::duplicate);  // a completed message stays readable
+        if (state_ == state::complete) {
+            state_ = state::idle;
+            size_ = 0;
+        }
+        if (skipping_ && f.command == skip_command_) {
+            if (f.remaining == 0) skipping_ = false;
+            remember(f);  // so that a repeat of it is not taken for a new message
+            return outcome(reassembly::discarded);
+        }
+        if (state_ == state::idle) return start(f);
+        // collecting
+        if (f.command != command_) {
+            if (f.remaining == 0) return outcome(reassembly::single);
+            const auto broken = command_;
+            if (const error e = start(f)) return e;
+            skip(broken);  // the rest of the broken message
+            return fail(errc::command_changed, 2);
+        }
+        if (f.remaining >= last_remaining_) {  // the sender started over
+            if (const error e = start(f)) return e;
+            return outcome(reassembly::restarted);
+        }
+        if (f.remaining + 1 != last_remaining_) {  // frames lost
+            drop();
+            remember(f);
+            if (f.remaining != 0) skip(f.command);
+            return fail(errc::bad_sequence, 3);
+        }
+        return append(f);
+    }
     // The first frame of a message (the partial one, if any, is dropped).
-    constexpr result<reassembly> start(const frame& f) noexcept {
+    constexpr error start(const frame& f) noexcept {
         drop();
         command_ = f.command;
         if ((std::size_t{f.remaining} + 1) > Capacity / payload_size) {
@@ -271,7 +291,7 @@ private:
         }
         return append(f);
     }
-    constexpr result<reassembly> append(const frame& f) noexcept {
+    constexpr error append(const frame& f) noexcept {
         // one fixed-size copy at run time, from `at` kept in a register (the copy's stores may alias size_)
         const std::size_t at = size_;
         if (ROBOWIRE_CONSTANT_EVALUATED() || ROBOWIRE_OPTIMIZE_SIZE) {
@@ -285,7 +305,7 @@ private:
         if (f.remaining != 0 || size_ > payload_size) remember(f);
         last_remaining_ = f.remaining;
         state_ = f.remaining == 0 ? state::complete : state::collecting;
-        return f.remaining == 0 ? reassembly::complete : reassembly::need_more;
+        return outcome(f.remaining == 0 ? reassembly::complete : reassembly::need_more);
     }
     // The next frame of the message being collected, from its bytes: what
     // push(frame) does with it. While collecting, a message being discarded
@@ -320,10 +340,10 @@ private:
 
     std::array<std::uint8_t, Capacity> buf_{};
     std::size_t size_ = 0;
-    frame last_{};                     // the last frame seen of a multi-frame message (if has_last_)
-    std::uint8_t last_remaining_ = 0;  // `remaining` of the last frame taken
+    frame last_{};  // the last frame seen of a multi-frame message (if has_last_)
     std::uint8_t command_ = 0;
-    std::uint8_t skip_command_ = 0;  // command of the broken message being discarded
+    std::uint8_t last_remaining_ = 0;  // `remaining` of the last frame taken (after command_: one word with it)
+    std::uint8_t skip_command_ = 0;    // command of the broken message being discarded
     bool skipping_ = false;
     bool has_last_ = false;
     state state_ = state::idle;
