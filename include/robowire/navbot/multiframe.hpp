@@ -193,6 +193,9 @@ inline namespace ROBOWIRE_MODE_NAMESPACE {
 // rejects such a tail (not one whole JSON object).
 template <std::size_t Capacity>
 class reassembler {
+    static_assert(Capacity >= payload_size && Capacity % payload_size == 0,
+                  "reassembler<Capacity>: Capacity is payload bytes, a multiple of 15 (payload_size)");
+
 public:
     constexpr result<reassembly> push(std::span<const std::uint8_t> frame_bytes) noexcept {
         if constexpr (!ROBOWIRE_OPTIMIZE_SIZE) {
