@@ -100,7 +100,32 @@ static void check_reassembly(const char* what, std::uint32_t seed) {
     }
 }
 
+// The careful sender's frames and lengths are json_frames' for every text
+// length a message takes (0 to 3840), with bytes that vary per length.
+static void check_sender() {
+    std::string text(nb::max_payload, ' ');
+    for (std::size_t n = 0; n <= nb::max_payload; ++n) {
+        for (std::size_t k = 0; k < n; ++k) text[k] = static_cast<char>((k * 131 + n * 7) & 0xFF);
+        const std::string_view s(text.data(), n);
+        const auto ours = nb::json_frames(s).value();
+        auto next = ours.begin();
+        std::size_t count = 0;
+        bool same = true;
+        careful_frames(s, [&](const sized_frame& w) {
+            if (count++ >= ours.size()) {
+                same = false;
+                return;
+            }
+            const auto f = *next++;
+            same = same && w.size == f.size() && std::memcmp(w.f, f.data(), f.size()) == 0;
+        });
+        ++g_counts["sender careful"];
+        if (!same || count != ours.size()) mismatch("sender careful", "text length " + std::to_string(n));
+    }
+}
+
 int main() {
+    check_sender();
     check_reassembly<hw_reassembler<210>>("reassembly handwritten", 1);
     check_reassembly<hw_reassembler<210, true>>("reassembly careful", 2);
     bench::rng rr;

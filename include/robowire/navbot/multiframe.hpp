@@ -55,12 +55,10 @@ public:
         using difference_type = std::ptrdiff_t;
         constexpr iterator() noexcept = default;
         constexpr value_type operator*() const noexcept {
-            return make_frame(command_, static_cast<std::uint8_t>(frames_ - 1), next_, left_);
+            return make_frame(command_, static_cast<std::uint8_t>(frames_ - 1), end_ - left_, left_);
         }
         constexpr iterator& operator++() noexcept {
-            const std::size_t step = left_ < payload_size ? left_ : payload_size;
-            next_ += step;
-            left_ -= step;
+            left_ -= payload_size;  // wraps past the last frame, where only frames_ is read
             --frames_;
             return *this;
         }
@@ -75,14 +73,16 @@ public:
 
     private:
         friend class basic_fragmenter;
-        constexpr iterator(const Byte* next, std::size_t left, std::size_t frames, std::uint8_t command) noexcept
-            : next_(next), left_(left), frames_(frames), command_(command) {}
-        const Byte* next_ = nullptr;  // payload of this frame
-        std::size_t left_ = 0;        // payload bytes from next_ on
-        std::size_t frames_ = 0;      // frames from this one on (0: end)
+        constexpr iterator(const Byte* end, std::size_t left, std::size_t frames, std::uint8_t command) noexcept
+            : end_(end), left_(left), frames_(frames), command_(command) {}
+        const Byte* end_ = nullptr;  // end of the payload
+        std::size_t left_ = 0;       // payload bytes from this frame's on (end_ - left_ is its first)
+        std::size_t frames_ = 0;     // frames from this one on (0: end)
         std::uint8_t command_ = 0;
     };
-    constexpr iterator begin() const noexcept { return {payload_.data(), payload_.size(), size(), command_}; }
+    constexpr iterator begin() const noexcept {
+        return {payload_.data() + payload_.size(), payload_.size(), size(), command_};
+    }
     constexpr iterator end() const noexcept { return {}; }
 
 private:
@@ -203,8 +203,9 @@ public:
                 codec::fixed_bytes_match<frame>(codec::deferred<reassembler>(frame_bytes))) {
                 const std::uint8_t* p = frame_bytes.data();
                 // command and remaining against command_ and last_remaining_ - 1, as one 16-bit word
-                if (load_le<std::uint16_t>(p + 2) + 0x100 == (command_ | last_remaining_ << 8)) [[likely]]
-                    return append_in_place(p);
+                const std::uint16_t key = load_le<std::uint16_t>(p + 2);
+                if (key + 0x100 == (command_ | last_remaining_ << 8)) [[likely]]
+                    return append_in_place(p, key);
             }
         }
         const auto f = codec::decode_at<frame>(codec::deferred<reassembler>(frame_bytes).data(), frame_bytes.size());
@@ -316,12 +317,13 @@ private:
     // leaves the state idle), and the last frame remembered is the last one
     // appended (its `remaining` is last_remaining_) or one of the discarded
     // command: neither a repeat nor a frame to discard can be this one.
-    result<reassembly> append_in_place(const std::uint8_t* p) noexcept {
-        const std::uint8_t remaining = p[3];
+    // key: the frame's command and remaining, as push loaded them.
+    result<reassembly> append_in_place(const std::uint8_t* p, std::uint16_t key) noexcept {
+        const auto remaining = static_cast<std::uint8_t>(key >> 8);
         std::memcpy(buf_.data() + size_, p + 5, payload_size);
         size_ += payload_size;  // more than one frame's: remembered
         has_last_ = true;
-        last_.command = p[2];
+        last_.command = static_cast<std::uint8_t>(key);
         last_.remaining = remaining;
         std::memcpy(last_.payload.data(), p + 5, payload_size);
         last_remaining_ = remaining;
