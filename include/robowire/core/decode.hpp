@@ -66,6 +66,18 @@ template <class M, bool = ROBOWIRE_OPTIMIZE_SIZE != 0>
 inline constexpr bool made_first_v = false;
 template <class M>
 inline constexpr bool made_first_v<M, true> = !flat_record<M, true>();
+// M's only optional field is its last, starting at min_size and ending at
+// max_size (BuWizz3's status).
+template <class M, std::size_t Last = field_count_v<M> - 1>
+constexpr bool optional_tail() noexcept {
+    if constexpr (field_count_v<M> == 0) return false;
+    else if constexpr (!shape_t<M, Last>::is_optional) return false;
+    else
+        return field_v<M, Last>.offset == table_v<M>.min_size() &&
+               field_v<M, Last>.offset + shape_t<M, Last>::size == table_v<M>.max_size();
+}
+template <class M>
+inline constexpr bool optional_tail_v = optional_tail<M>();
 // The write pass: M's fields from an input whose fixed bytes, length and
 // fields are checked (check_record); no branch, runs copied at once.
 // P: prechecked, or prechecked_unset for unset storage.
@@ -73,9 +85,27 @@ template <class M, class P = prechecked>
 ROBOWIRE_ALWAYS_INLINE constexpr void write_body(M& out, in_bytes in) noexcept {
     constexpr std::size_t extent = table_v<M>.max_size();
     P none{};
-    (void)decode_record<M>(out, in.size() > extent ? in.first(extent) : in, 0, none,
-                           std::make_index_sequence<field_count_v<M>>{});
-    if constexpr (reports_trailing<M>) out.ignored_trailing_bytes = in.size() > extent ? in.size() - extent : 0;
+    if constexpr (reports_trailing<M> && optional_tail_v<M>) {
+        // checked: min_size bytes, or the block whole. One test finds the block
+        // and the count, each branch storing its own (as a hand would write it;
+        // a count stored after the branches is tested again, or shared by a jump).
+        constexpr std::size_t min = table_v<M>.min_size(), last = field_count_v<M> - 1;
+        constexpr auto& f = field_v<M, last>;
+        (void)decode_record<M>(out, in_bytes(in.data(), min), 0, none, std::make_index_sequence<last>{});
+        if (in.size() > min) {  // the block: present, its size known
+            (void)decode_field<shape_t<M, last>, f.valid.min, f.valid.max>(out.*(f.member), in_bytes(in.data(), extent),
+                                                                           min, none);
+            out.ignored_trailing_bytes = in.size() - extent;
+        } else {  // absent
+            (void)decode_field<shape_t<M, last>, f.valid.min, f.valid.max>(out.*(f.member), in_bytes(in.data(), min),
+                                                                           min, none);
+            out.ignored_trailing_bytes = 0;
+        }
+    } else {
+        (void)decode_record<M>(out, in.size() > extent ? in.first(extent) : in, 0, none,
+                               std::make_index_sequence<field_count_v<M>>{});
+        if constexpr (reports_trailing<M>) out.ignored_trailing_bytes = in.size() > extent ? in.size() - extent : 0;
+    }
 }
 // The fields of M, from an input whose fixed bytes and length are checked.
 // OnePass false: every field is checked before the first is written, so on
