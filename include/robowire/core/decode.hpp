@@ -66,18 +66,44 @@ template <class M, bool = ROBOWIRE_OPTIMIZE_SIZE != 0>
 inline constexpr bool made_first_v = false;
 template <class M>
 inline constexpr bool made_first_v<M, true> = !flat_record<M, true>();
-// M's only optional field is its last, starting at min_size and ending at
-// max_size (BuWizz3's status).
+// M counts its trailing bytes, and its only optional field is its last,
+// from min_size to max_size (BuWizz3's status).
 template <class M, std::size_t Last = field_count_v<M> - 1>
-constexpr bool optional_tail() noexcept {
-    if constexpr (field_count_v<M> == 0) return false;
+constexpr bool tail_block() noexcept {
+    if constexpr (!reports_trailing<M> || field_count_v<M> == 0) return false;
     else if constexpr (!shape_t<M, Last>::is_optional) return false;
     else
         return field_v<M, Last>.offset == table_v<M>.min_size() &&
                field_v<M, Last>.offset + shape_t<M, Last>::size == table_v<M>.max_size();
 }
 template <class M>
-inline constexpr bool optional_tail_v = optional_tail<M>();
+inline constexpr bool tail_block_v = tail_block<M>();
+// Such a message's fields: those before the block, then one length test finds
+// the block and each branch stores its own trailing count, as a hand writes
+// it (a count stored after the branches is tested again, or reached by a
+// jump). Err prechecked (the write pass): the length is checked already.
+template <class M, class Err>
+ROBOWIRE_ALWAYS_INLINE constexpr bool decode_with_tail(M& out, in_bytes in, Err& err) noexcept {
+    constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_size(), last = field_count_v<M> - 1;
+    constexpr auto& f = field_v<M, last>;
+    using S = shape_t<M, last>;
+    if (!decode_record<M>(out, in_bytes(in.data(), min), 0, err, std::make_index_sequence<last>{})) return false;
+    if (in.size() > min) {  // the block, whole once checked
+        if constexpr (checks_v<Err>) {
+            if (in.size() < max) {
+                err = codec::fail_at(errc::bad_length, min);
+                return false;
+            }
+        }
+        if (!decode_field<S, f.valid.min, f.valid.max>(out.*(f.member), in_bytes(in.data(), max), min, err))
+            return false;
+        out.ignored_trailing_bytes = in.size() - max;
+    } else {  // no block
+        (void)decode_field<S, f.valid.min, f.valid.max>(out.*(f.member), in_bytes(in.data(), min), min, err);
+        out.ignored_trailing_bytes = 0;
+    }
+    return true;
+}
 // The write pass: M's fields from an input whose fixed bytes, length and
 // fields are checked (check_record); no branch, runs copied at once.
 // P: prechecked, or prechecked_unset for unset storage.
@@ -85,22 +111,8 @@ template <class M, class P = prechecked>
 ROBOWIRE_ALWAYS_INLINE constexpr void write_body(M& out, in_bytes in) noexcept {
     constexpr std::size_t extent = table_v<M>.max_size();
     P none{};
-    if constexpr (reports_trailing<M> && optional_tail_v<M>) {
-        // checked: min_size bytes, or the block whole. One test finds the block
-        // and the count, each branch storing its own (as a hand would write it;
-        // a count stored after the branches is tested again, or shared by a jump).
-        constexpr std::size_t min = table_v<M>.min_size(), last = field_count_v<M> - 1;
-        constexpr auto& f = field_v<M, last>;
-        (void)decode_record<M>(out, in_bytes(in.data(), min), 0, none, std::make_index_sequence<last>{});
-        if (in.size() > min) {  // the block: present, its size known
-            (void)decode_field<shape_t<M, last>, f.valid.min, f.valid.max>(out.*(f.member), in_bytes(in.data(), extent),
-                                                                           min, none);
-            out.ignored_trailing_bytes = in.size() - extent;
-        } else {  // absent
-            (void)decode_field<shape_t<M, last>, f.valid.min, f.valid.max>(out.*(f.member), in_bytes(in.data(), min),
-                                                                           min, none);
-            out.ignored_trailing_bytes = 0;
-        }
+    if constexpr (tail_block_v<M>) {
+        (void)decode_with_tail<M>(out, in, none);
     } else {
         (void)decode_record<M>(out, in.size() > extent ? in.first(extent) : in, 0, none,
                                std::make_index_sequence<field_count_v<M>>{});
@@ -124,6 +136,10 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, in_bytes in) noexcept
             write_body<M, prechecked_t<decltype(err)>>(out, in);
             return check_members(out);
         }
+    }
+    if constexpr (OnePass && tail_block_v<M>) {
+        if (!decode_with_tail<M>(out, in, err)) return err;
+        return {};
     }
     if constexpr (OnePass) {
         const auto known = in.size() > extent ? in.first(extent) : in;
