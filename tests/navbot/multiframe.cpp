@@ -2,6 +2,7 @@
 #include <robowire/navbot/multiframe.hpp>
 
 #include <catch2/catch.hpp>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -140,6 +141,8 @@ TEST_CASE("navbot: reassembler error paths", "[navbot][multiframe]") {
         CHECK(r.push(make_frame(2, 1, 'a')).value() == reassembly::need_more);
         const auto bad = test::hex("55 AB 02 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00");
         CHECK(r.push(bad).error() == error{errc::bad_header, 1});
+        const std::array<std::uint8_t, 20> zeroed{};  // a driver's buffer never written
+        CHECK(r.push(zeroed).error() == error{errc::bad_header, 0});
         CHECK(r.push(test::hex("55 AA 02 00 00 62")).error() == error{errc::too_short, 6});
         CHECK(r.in_progress());
         CHECK(r.push(make_frame(2, 0, 'b')).value() == reassembly::complete);

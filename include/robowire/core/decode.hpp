@@ -241,9 +241,12 @@ ROBOWIRE_ALWAYS_INLINE bool fixed_words_match(const std::uint8_t* in, std::index
     constexpr auto& words = fixed_words_v<Known, M>;
     (void)in;                           // no fixed byte left to compare
     if constexpr (sizeof...(K) == 1) {  // one compare (with a memory operand where the word is whole)
-        std::uint64_t w = 0;
+        using word = typename uint_of_size<words.width>::type;  // the word's own width: a compare with memory folds
+        word w = 0;
         std::memcpy(&w, in + words.w[0].start, words.width);
-        return (w & words.w[0].mask) == words.w[0].value;
+        constexpr auto mask = static_cast<word>(words.w[0].mask), value = static_cast<word>(words.w[0].value);
+        if constexpr (mask == static_cast<word>(~word{0})) return w == value;
+        else return static_cast<word>(w & mask) == value;
     }
     std::uint64_t diff = 0;
     (

@@ -56,6 +56,10 @@ template <>
 struct uint_of_size<4> {
     using type = std::uint32_t;
 };
+template <>
+struct uint_of_size<8> {
+    using type = std::uint64_t;
+};
 
 // At run time: memcpy (one wide load or store where the core allows
 // unaligned access), except 16-bit values on cores without unaligned access
