@@ -70,14 +70,16 @@ inline constexpr bool made_first_v<M, true> = !flat_record<M, true>();
 // from min_size to max_size (BuWizz3's status).
 template <class M, std::size_t Last = field_count_v<M> - 1>
 constexpr bool tail_block() noexcept {
-    if constexpr (!reports_trailing<M> || field_count_v<M> == 0) return false;
+    if constexpr (field_count_v<M> == 0) return false;
     else if constexpr (!shape_t<M, Last>::is_optional) return false;
     else
         return field_v<M, Last>.offset == table_v<M>.min_size() &&
                field_v<M, Last>.offset + shape_t<M, Last>::size == table_v<M>.max_size();
 }
+template <class M, bool = reports_trailing<M>>  // worked out only for those
+inline constexpr bool tail_block_v = false;
 template <class M>
-inline constexpr bool tail_block_v = tail_block<M>();
+inline constexpr bool tail_block_v<M, true> = tail_block<M>();
 // Such a message's fields: those before the block, then one length test finds
 // the block and each branch stores its own trailing count, as a hand writes
 // it (a count stored after the branches is tested again, or reached by a
@@ -119,6 +121,30 @@ ROBOWIRE_ALWAYS_INLINE constexpr void write_body(M& out, in_bytes in) noexcept {
         if constexpr (reports_trailing<M>) out.ignored_trailing_bytes = in.size() > extent ? in.size() - extent : 0;
     }
 }
+// The first field of `in` (fixed bytes and length checked) that fails its
+// check, in table order (one does).
+template <class M>
+ROBOWIRE_COLD constexpr error input_field_error(const std::uint8_t* data, std::size_t size) noexcept {
+    error err{};
+    (void)check_record<M>(in_bytes(data, size), 0, err, std::make_index_sequence<field_count_v<M>>{});
+    return err;
+}
+// The check pass: every field of `in` valid, else false with the first error
+// in err. Speed: the checks as one yes/no, which one failed found out of line
+// (no error code or offset set up on the good path).
+template <class M, bool YesNo = true>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_input(in_bytes in, error& err) noexcept {
+    constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE || !YesNo) {
+        return check_record<M>(in, 0, err, fields);
+    } else {
+        error unread{};  // its stores are dead: dropped
+        if (check_record<M>(in, 0, unread, fields)) [[likely]]
+            return true;
+        err = input_field_error<M>(in.data(), in.size());
+        return false;
+    }
+}
 // The fields of M, from an input whose fixed bytes and length are checked.
 // OnePass false: every field is checked before the first is written, so on
 // an error `out` is left as it was, and runs of fields are copied at once.
@@ -126,7 +152,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr void write_body(M& out, in_bytes in) noexcept {
 // output that is discarded on an error (a local, a result being built).
 // Fresh (with OnePass): `out` was made just before (made_first_v), so absent
 // optional blocks are empty already, or its storage is unset.
-template <class M, bool OnePass = false, bool Fresh = false>
+// YesNo: see check_input (the dispatchers pass false: fewer instructions there).
+template <class M, bool OnePass = false, bool Fresh = false, bool YesNo = true>
 ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, in_bytes in) noexcept {
     constexpr std::size_t extent = table_v<M>.max_size();
     constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
@@ -147,7 +174,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_body(M& out, in_bytes in) noexcept
         if constexpr (reports_trailing<M>) out.ignored_trailing_bytes = in.size() - known.size();
         return {};  // a constant, not err: compilers then build no error on the good path
     }
-    if (!check_record<M>(in, 0, err, fields)) return err;  // reads the first `extent` bytes only
+    if (!check_input<M, YesNo>(in, err)) return err;  // reads the first `extent` bytes only
     write_body(out, in);
     return {};
 }
@@ -162,7 +189,8 @@ namespace codec::inline ROBOWIRE_MODE_NAMESPACE {
 // an error, such as a dispatcher's result).
 template <described M>
 ROBOWIRE_ALWAYS_INLINE constexpr error decode_fields(M& out, std::span<const std::uint8_t> in) noexcept {
-    return detail::decode_body<M, ROBOWIRE_OPTIMIZE_SIZE>(out, detail::in_bytes(in.data(), max_size_v<M>));
+    return detail::decode_body<M, ROBOWIRE_OPTIMIZE_SIZE, false, false>(out,
+                                                                        detail::in_bytes(in.data(), max_size_v<M>));
 }
 }  // namespace codec::inline ROBOWIRE_MODE_NAMESPACE
 
@@ -366,7 +394,7 @@ template <described M>
         return r;
     } else {
         if (!detail::input_ok<detail::no_offset, M>(r, in)) return r;
-        if (error e{}; !detail::check_record<M>(in, 0, e, std::make_index_sequence<detail::field_count_v<M>>{})) {
+        if (error e{}; !detail::check_input<M>(in, e)) {
             r = e;  // checked before the message is made: nothing to undo
             return r;
         }

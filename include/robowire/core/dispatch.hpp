@@ -147,7 +147,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_alternative(result<Variant>& r, in_
         A local{};
         if (const error e = decode_body<A, true>(local, in); e.code != errc::ok) r = e;
         else codec::make_alternative<I>(r) = local;
-    } else if (const error e = decode_body<A, one_pass>(codec::make_alternative<I>(r), in); e.code != errc::ok) {
+    } else if (const error e = decode_body<A, one_pass, false, false>(codec::make_alternative<I>(r), in);
+               e.code != errc::ok) {
         r = e;
     }
 }
