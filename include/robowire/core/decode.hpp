@@ -66,8 +66,8 @@ template <class M, bool = ROBOWIRE_OPTIMIZE_SIZE != 0>
 inline constexpr bool made_first_v = false;
 template <class M>
 inline constexpr bool made_first_v<M, true> = !flat_record<M, true>();
-// M counts its trailing bytes, and its only optional field is its last,
-// from min_size to max_size (BuWizz3's status).
+// M counts its trailing bytes (tail_block_v) and its last field is an
+// optional block from min_size to max_size (BuWizz3's status).
 template <class M, std::size_t Last = field_count_v<M> - 1>
 constexpr bool tail_block() noexcept {
     if constexpr (field_count_v<M> == 0) return false;
@@ -83,7 +83,8 @@ inline constexpr bool tail_block_v<M, true> = tail_block<M>();
 // Such a message's fields: those before the block, then one length test finds
 // the block and each branch stores its own trailing count, as a hand writes
 // it (a count stored after the branches is tested again, or reached by a
-// jump). Err prechecked (the write pass): the length is checked already.
+// jump). `in` holds at least min_size bytes; Err prechecked (the write pass):
+// min_size, or max_size or more (checked already).
 template <class M, class Err>
 ROBOWIRE_ALWAYS_INLINE constexpr bool decode_with_tail(M& out, in_bytes in, Err& err) noexcept {
     constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_size(), last = field_count_v<M> - 1;
@@ -107,7 +108,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_with_tail(M& out, in_bytes in, Err&
     return true;
 }
 // The write pass: M's fields from an input whose fixed bytes, length and
-// fields are checked (check_record); no branch, runs copied at once.
+// fields are checked (check_record); no branch (but a tail block's length
+// test: decode_with_tail), runs copied at once.
 // P: prechecked, or prechecked_unset for unset storage.
 template <class M, class P = prechecked>
 ROBOWIRE_ALWAYS_INLINE constexpr void write_body(M& out, in_bytes in) noexcept {
@@ -217,7 +219,8 @@ inline constexpr bool fixed_within_min_v = fixed_within(table_v<M>.fixed.data(),
                                                         table_v<M>.min_size());
 // The fixed bytes of M but the one at offset Known, as masked words of the
 // shortest input (ROBOWIRE_COPY_RUNS targets): each word a load, an xor and an
-// and, as a hand-written decoder compares its markers. The words are as
+// and (a lone word: a load and a compare), as a hand-written decoder compares
+// its markers. The words are as
 // narrow as takes no more of them (a 4-byte header: one 32-bit compare).
 // Worked out by plain functions (one definition for every message: cheaper
 // to compile than a lambda and a local type per message).
