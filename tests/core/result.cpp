@@ -37,7 +37,17 @@ TEST_CASE("result<T> holds a value or an error with an offset", "[core][result]"
     CHECK(to_string(errc::bad_trailer) == "bad trailer byte");
 }
 
+namespace {
+// Row i of errc_table is the code whose value is i (to_string and name_of index it).
+constexpr bool errc_table_in_order() {
+    for (std::size_t i = 0; i < errc_count; ++i)
+        if (static_cast<std::size_t>(errc_table[i].code) != i) return false;
+    return true;
+}
+}  // namespace
+
 TEST_CASE("to_string and name_of read errc_table", "[core][result]") {
+    STATIC_REQUIRE(errc_table_in_order());
     STATIC_REQUIRE(to_string(errc::not_handled) == "message not handled");
     STATIC_REQUIRE(name_of(errc::not_handled) == "not_handled");
     STATIC_REQUIRE(name_of(errc::bad_json) == "bad_json");

@@ -193,13 +193,26 @@ template <std::size_t N, std::size_t M>
 }
 
 namespace detail {
-// The two upper-case hex digits of each byte value (to_hex at speed).
-inline constexpr auto hex_pairs = [] {
-    std::array<std::array<char, 2>, 256> t{};
-    constexpr char digits[] = "0123456789ABCDEF";
-    for (std::size_t i = 0; i < 256; ++i) t[i] = {digits[i >> 4], digits[i & 15]};
-    return t;
-}();
+// The two upper-case hex digits of each byte value b, at 2 * b (to_hex at
+// speed; a literal: nothing to evaluate in a file that includes this header).
+inline constexpr char hex_pairs[] =
+    "000102030405060708090A0B0C0D0E0F"
+    "101112131415161718191A1B1C1D1E1F"
+    "202122232425262728292A2B2C2D2E2F"
+    "303132333435363738393A3B3C3D3E3F"
+    "404142434445464748494A4B4C4D4E4F"
+    "505152535455565758595A5B5C5D5E5F"
+    "606162636465666768696A6B6C6D6E6F"
+    "707172737475767778797A7B7C7D7E7F"
+    "808182838485868788898A8B8C8D8E8F"
+    "909192939495969798999A9B9C9D9E9F"
+    "A0A1A2A3A4A5A6A7A8A9AAABACADAEAF"
+    "B0B1B2B3B4B5B6B7B8B9BABBBCBDBEBF"
+    "C0C1C2C3C4C5C6C7C8C9CACBCCCDCECF"
+    "D0D1D2D3D4D5D6D7D8D9DADBDCDDDEDF"
+    "E0E1E2E3E4E5E6E7E8E9EAEBECEDEEEF"
+    "F0F1F2F3F4F5F6F7F8F9FAFBFCFDFEFF";
+static_assert(sizeof hex_pairs == 513);
 }  // namespace detail
 
 // Characters to_hex writes for n bytes (with a separator: 3n - 1, else 2n).
@@ -221,13 +234,14 @@ inline constexpr auto hex_pairs = [] {
             const std::size_t last = in.size() - 1;
             if (separator) {
                 for (std::size_t i = 0; i < last; ++i, o += 3) {
-                    std::memcpy(o, detail::hex_pairs[in[i]].data(), 2);
+                    std::memcpy(o, detail::hex_pairs + 2 * std::size_t{in[i]}, 2);
                     o[2] = separator;
                 }
             } else {
-                for (std::size_t i = 0; i < last; ++i, o += 2) std::memcpy(o, detail::hex_pairs[in[i]].data(), 2);
+                for (std::size_t i = 0; i < last; ++i, o += 2)
+                    std::memcpy(o, detail::hex_pairs + 2 * std::size_t{in[i]}, 2);
             }
-            std::memcpy(o, detail::hex_pairs[in[last]].data(), 2);
+            std::memcpy(o, detail::hex_pairs + 2 * std::size_t{in[last]}, 2);
             return need;
         }
     }

@@ -75,14 +75,6 @@ inline constexpr errc_info errc_table[] = {
 };
 // Number of error codes, ok included.
 inline constexpr std::size_t errc_count = sizeof errc_table / sizeof errc_table[0];
-namespace detail {
-constexpr bool errc_table_in_order() noexcept {
-    for (std::size_t i = 0; i < errc_count; ++i)
-        if (static_cast<std::size_t>(errc_table[i].code) != i) return false;
-    return true;
-}
-static_assert(errc_table_in_order(), "errc_table: row i must be the code whose value is i");
-}  // namespace detail
 
 // Short, stable, lower-case description of an error code ("unknown error"
 // for a value that is no code).
@@ -174,6 +166,7 @@ template <std::size_t... I>
 constexpr void compile_time_bad_access(errc code, std::index_sequence<I...>) noexcept {
     (void)((code == errc_table[I].code ? (result_holds_error<errc_table[I].code>(), true) : false) || ...);
 }
+template <int = 0>  // instantiated with the first constant expression that needs it
 constexpr void compile_time_bad_access(errc code) noexcept {
     if (code == errc::ok) result_holds_value_not_error();
     else compile_time_bad_access(code, std::make_index_sequence<errc_count>{});
