@@ -23,4 +23,8 @@ template <> robowire::result<bw::status> robowire::decode<bw::status>(std::span<
 template <> inline constexpr auto robowire::table_v<bw::status> = table_of(std::type_identity<bw::status>{});
 template <> inline constexpr auto robowire::table_v<bw::set_motor_data> = table_of(std::type_identity<bw::set_motor_data>{});
 template <> inline constexpr auto robowire::table_v<osp::obp1::voltage> = table_of(std::type_identity<osp::obp1::voltage>{});
+template <> inline constexpr auto robowire::table_v<osp::frame> = table_of(std::type_identity<osp::frame>{});
 template <> inline constexpr auto robowire::fuzz_tokens_v<osp::message> = std::array<robowire::fuzz_token, 0>{};
+
+// Nor osp::decode_result, nor the variant of every OSP message it holds.
+template <> class robowire::result<osp::message>;

@@ -20,34 +20,58 @@
 
 namespace robowire::osp {
 
-class decode_result;
 namespace impl {
-constexpr void set_frame(decode_result& d, const osp::frame* f) noexcept;
-constexpr osp::frame& frame_in_place(decode_result& d) noexcept;
+template <class Message>
+class decode_result_of;
+// osp::message, named through template arguments: where the name does not
+// depend on one, the compilers instantiate what it names (the variant,
+// decode_result, every OSP table) in each file that includes this header.
+template <auto...>
+struct dependent_message {
+    using type = message;
+};
+// osp::frame, named through a template argument (see dependent_message).
+template <class T>
+using frame_for = std::conditional_t<true, osp::frame, T>;
+// osp::decode_result, named through template arguments (see dependent_message).
+template <auto... X>
+using decode_result_t = decode_result_of<typename dependent_message<X...>::type>;
+template <class M>
+constexpr void set_frame(decode_result_of<M>& d, const osp::frame* f) noexcept;
+template <class M>
+constexpr osp::frame& frame_in_place(decode_result_of<M>& d) noexcept;
 }  // namespace impl
+// The result of osp::decode (below). A template instance: a file that only
+// includes this header instantiates neither it nor osp::message.
+using decode_result = impl::decode_result_of<message>;
 inline namespace ROBOWIRE_MODE_NAMESPACE {
-// Decodes one 10-byte frame (below). A template, so that nothing is
-// instantiated in a translation unit that does not call it.
+// Decodes one 10-byte frame (below) into an osp::decode_result. A template,
+// so that nothing is instantiated in a translation unit that does not call it.
 template <class Message = message>
-[[nodiscard]] constexpr decode_result decode(std::span<const std::uint8_t> in) noexcept;
+[[nodiscard]] constexpr impl::decode_result_t<sizeof(Message)> decode(std::span<const std::uint8_t> in) noexcept;
 }  // namespace ROBOWIRE_MODE_NAMESPACE
 
-// The result of osp::decode: the message, or an error; frame() holds DEV,
-// CMD and P1..P4 whenever the markers and length were right, so an
-// unknown_message (or a bad field) still shows what came in.
-class decode_result : public result<message> {
+// osp::decode_result: the message, or an error; frame() holds DEV, CMD and
+// P1..P4 whenever the markers and length were right, so an unknown_message
+// (or a bad field) still shows what came in.
+template <class Message>
+class impl::decode_result_of : public result<Message> {
 public:
-    constexpr decode_result(result<message> r, std::optional<osp::frame> f) noexcept : result<message>(r), frame_(f) {}
-    constexpr explicit decode_result(std::in_place_t) noexcept : result<message>(std::in_place), frame_(std::nullopt) {}
+    constexpr decode_result_of(result<Message> r, std::optional<osp::frame> f) noexcept
+        : result<Message>(r), frame_(f) {}
+    constexpr explicit decode_result_of(std::in_place_t) noexcept
+        : result<Message>(std::in_place), frame_(std::nullopt) {}
     // Neither a message nor an error yet (see result's constructor), and not
     // even "no frame": for osp::decode, which sets both on every path.
-    constexpr explicit decode_result(codec::unset_t u) noexcept : result<message>(u) {}
-    using result<message>::operator=;
+    constexpr explicit decode_result_of(codec::unset_t u) noexcept : result<Message>(u) {}
+    using result<Message>::operator=;
     constexpr const std::optional<osp::frame>& frame() const noexcept { return frame_.f; }
 
 private:
-    friend constexpr void impl::set_frame(decode_result& d, const osp::frame* f) noexcept;
-    friend constexpr osp::frame& impl::frame_in_place(decode_result& d) noexcept;
+    template <class M>
+    friend constexpr void impl::set_frame(decode_result_of<M>& d, const osp::frame* f) noexcept;
+    template <class M>
+    friend constexpr osp::frame& impl::frame_in_place(decode_result_of<M>& d) noexcept;
     union slot {  // a union: the unset constructor makes no store
         std::optional<osp::frame> f;
         constexpr slot() noexcept {}  // nothing yet
@@ -57,7 +81,8 @@ private:
     slot frame_;
 };
 // Makes d's frame *f, or none for nullptr, whatever it held (also nothing, after decode_result(unset_t)).
-constexpr void impl::set_frame(decode_result& d, const osp::frame* f) noexcept {
+template <class M>
+constexpr void impl::set_frame(decode_result_of<M>& d, const osp::frame* f) noexcept {
     if (ROBOWIRE_CONSTANT_EVALUATED()) {  // a whole-union copy makes the member the active one
         d.frame_ = f ? std::optional<osp::frame>(std::in_place, *f) : std::optional<osp::frame>();
     } else if (f) {  // in place, a store per byte (a 7-byte union copy calls memcpy at -Os)
@@ -67,7 +92,8 @@ constexpr void impl::set_frame(decode_result& d, const osp::frame* f) noexcept {
     }
 }
 // Makes d hold a frame, whatever it held, and returns it, to be written in place.
-constexpr osp::frame& impl::frame_in_place(decode_result& d) noexcept {
+template <class M>
+constexpr osp::frame& impl::frame_in_place(decode_result_of<M>& d) noexcept {
     if (ROBOWIRE_CONSTANT_EVALUATED()) d.frame_ = std::optional<osp::frame>(std::in_place);
     else ::new (static_cast<void*>(&d.frame_.f)) std::optional<osp::frame>(std::in_place);
     return *d.frame_.f;
@@ -110,34 +136,38 @@ constexpr bool plain_frame() noexcept {
 }
 // The four markers: the fixed bytes of osp::frame (a copy of them alone, so
 // that the loop below keeps only 32 bytes of the table in flash).
-inline constexpr auto markers = table_v<osp::frame>.fixed;
+// A template (F is osp::frame): including this header evaluates no table.
+template <class F>
+inline constexpr auto markers = table_v<F>.fixed;
 inline namespace ROBOWIRE_MODE_NAMESPACE {
 // Which of the checks below a frame failed, in decode_into<frame>'s order
 // (out of line: the good path is one test per byte).
+template <class F = osp::frame>
 ROBOWIRE_COLD constexpr error frame_error(std::span<const std::uint8_t> in) noexcept {
-    constexpr auto all = std::make_index_sequence<markers.size()>{};
-    if (const error e = codec::check_fixed<osp::frame>(in, all)) return e;
+    constexpr auto all = std::make_index_sequence<markers<F>.size()>{};
+    if (const error e = codec::check_fixed<F>(in, all)) return e;
     if (in.size() < frame_size) return codec::fail_at(errc::too_short, in.size());
     return fail(errc::too_long, frame_size);
 }
 // Markers and length of any frame: the checks of decode_into<frame>, shared by every message.
+template <class F = osp::frame>
 constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
     if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {  // a loop over the four
-        for (const auto& m : markers)
+        for (const auto& m : markers<F>)
             if (m.offset < in.size() && in[m.offset] != m.value) return codec::fail_at(m.code, m.offset);
         if (in.size() < frame_size) return codec::fail_at(errc::too_short, in.size());
         if (in.size() > frame_size) return fail(errc::too_long, frame_size);
         return {};
     } else {  // the markers as masked words: faster on hosts (clang++ 14 too: it keeps four byte compares)
-        if (in.size() == frame_size && codec::fixed_bytes_match<osp::frame>(in)) [[likely]]
+        if (in.size() == frame_size && codec::fixed_bytes_match<F>(in)) [[likely]]
             return {};
-        return frame_error(in);
+        return frame_error<F>(in);
     }
 }
 // Fixed bytes checked by the frame already: makes the message and decodes its fields in place.
 // FlagSet: d's flag is stored (true) already, with the frame (decode_at).
 template <std::size_t I, bool FlagSet = false>
-ROBOWIRE_ALWAYS_INLINE constexpr void decode_message(decode_result& d, std::span<const std::uint8_t> in) noexcept {
+ROBOWIRE_ALWAYS_INLINE constexpr void decode_message(decode_result_t<I>& d, std::span<const std::uint8_t> in) noexcept {
     if constexpr (FlagSet) {
         auto& m = codec::make_alternative_keep_flag<I>(d);
         if (const error e = codec::decode_fields(m, in); e.code != errc::ok) d = e;
@@ -147,7 +177,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_message(decode_result& d, std::span
 }
 // The message whose key is `key`, by one compare per message (less code).
 template <std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key_chain(decode_result& d, std::uint16_t key,
+ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key_chain(decode_result_t<I...>& d, std::uint16_t key,
                                                           std::span<const std::uint8_t> in,
                                                           std::index_sequence<I...>) noexcept {
     const bool known =
@@ -159,13 +189,6 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key_chain(decode_result& d, std:
 constexpr std::uint16_t wire_key(std::uint16_t key) noexcept {
     return static_cast<std::uint16_t>(key >> 8 | (key & 0xFF) << 8);
 }
-// osp::message, named through template arguments: where the name does not
-// depend on one, clang++ evaluates keys_v and sorted_keys_v, and so every
-// OSP table, in each file that includes this header.
-template <auto...>
-struct dependent_message {
-    using type = message;
-};
 // (wire_key, alternative index) of each alternative, sorted by wire_key.
 template <class Message>
 inline constexpr auto sorted_keys_v = [] {
@@ -182,7 +205,7 @@ inline constexpr auto sorted_keys_v = [] {
 // average, where a tree that tests for equal only at its leaves (clang++'s
 // best) takes 9.
 template <std::size_t Lo, std::size_t Hi, bool FlagSet>
-ROBOWIRE_ALWAYS_INLINE constexpr void decode_in_range(decode_result& d, std::uint16_t key,
+ROBOWIRE_ALWAYS_INLINE constexpr void decode_in_range(decode_result_t<Lo>& d, std::uint16_t key,
                                                       std::span<const std::uint8_t> in) noexcept {
     constexpr auto& k = sorted_keys_v<typename dependent_message<Lo>::type>;
 #if defined(__clang__)  // clang++ makes `key > k` a second compare (`key < k + 1`), in either order
@@ -209,7 +232,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_in_range(decode_result& d, std::uin
 // speed, a compare tree on the wire_key: g++ turns the chain into a jump
 // table, whose load costs more.
 template <bool FlagSet = false, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result& d, std::span<const std::uint8_t> in,
+ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result_t<I...>& d, std::span<const std::uint8_t> in,
                                                     std::index_sequence<I...> all) noexcept {
     if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
         if (ROBOWIRE_CONSTANT_EVALUATED()) {
@@ -293,14 +316,26 @@ namespace impl::inline ROBOWIRE_MODE_NAMESPACE {
 // How decode copies DEV, CMD and P1..P4 fastest: clang++ merges a memcpy into
 // the frame made in place and drops its zeroing; g++ keeps the zeroing, and
 // merges the six byte copies instead.
-// g++ stores result's flag, the frame and its flag as one word where the
-// layout allows (frame_word_offset); clang++ would take DEV and CMD for the
-// compare tree out of that word with shifts instead of one load.
+// Both store result's flag, the frame and its flag as one word where the
+// layout allows (frame_word_offset). clang++ would take DEV and CMD for the
+// compare tree out of that word with shifts: the word's address is hidden
+// from it (frame_word_source), so that DEV and CMD stay one 16-bit load.
 #if defined(__clang__)
 inline constexpr bool frame_by_memcpy = true;
-inline constexpr bool frame_by_word = false;
 #else
 inline constexpr bool frame_by_memcpy = false;
+#endif
+#if defined(__clang__) && (defined(__x86_64__) || defined(__aarch64__))
+ROBOWIRE_ALWAYS_INLINE const std::uint8_t* frame_word_source(const std::uint8_t* p) noexcept {
+    __asm__("" : "+r"(p));  // no instruction: p, unknown to the optimizer
+    return p;
+}
+inline constexpr bool frame_by_word = ROBOWIRE_COPY_RUNS && std::endian::native == std::endian::little;
+#elif defined(__clang__)
+ROBOWIRE_ALWAYS_INLINE const std::uint8_t* frame_word_source(const std::uint8_t* p) noexcept { return p; }
+inline constexpr bool frame_by_word = false;
+#else
+ROBOWIRE_ALWAYS_INLINE const std::uint8_t* frame_word_source(const std::uint8_t* p) noexcept { return p; }
 inline constexpr bool frame_by_word = ROBOWIRE_COPY_RUNS && std::endian::native == std::endian::little;
 #endif
 // Where decode_result keeps result's flag, DEV, CMD, P1..P4 and the frame's
@@ -309,11 +344,13 @@ inline constexpr bool frame_by_word = ROBOWIRE_COPY_RUNS && std::endian::native 
 // folds to a constant. A template: including this header compiles none of it.
 template <class Message>
 std::size_t frame_word_offset() noexcept {
-    const decode_result v(result<message>(Message{}), osp::frame{2, 3, {4, 5, 6, 7}});
-    const decode_result e(result<message>(fail(errc::unknown_message, 2)), std::nullopt);
+    using R = decode_result_t<sizeof(Message)>;
+    using M = typename dependent_message<sizeof(Message)>::type;
+    const R v(result<M>(Message{}), osp::frame{2, 3, {4, 5, 6, 7}});
+    const R e(result<M>(fail(errc::unknown_message, 2)), std::nullopt);
     const auto* vb = reinterpret_cast<const unsigned char*>(&v);
     const auto at = static_cast<std::size_t>(reinterpret_cast<const unsigned char*>(&*v.frame()) - vb);
-    if (at == 0 || at + 7 > sizeof(decode_result)) return 0;
+    if (at == 0 || at + 7 > sizeof(R)) return 0;
     std::uint64_t wv, we;  // little-endian: the first byte lowest
     std::memcpy(&wv, vb + at - 1, 8);
     std::memcpy(&we, reinterpret_cast<const unsigned char*>(&e) + at - 1, 8);
@@ -322,12 +359,13 @@ std::size_t frame_word_offset() noexcept {
 // decode's work, out of line: the input as pointer and size (a span that an
 // inlined caller passes on by value is copied through the stack first).
 template <class Message>
-constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) noexcept {
+constexpr decode_result_t<sizeof(Message)> decode_at(const std::uint8_t* data, std::size_t size) noexcept {
+    using R = decode_result_t<sizeof(Message)>;
     const std::span<const std::uint8_t> in(data, size);
     // A message or an error on every path below (under ROBOWIRE_OPTIMIZE_SIZE: a
     // default message first, less code).
-    decode_result d = ROBOWIRE_OPTIMIZE_SIZE ? decode_result{std::in_place} : decode_result{codec::unset_t{}};
-    if (const error e = check_frame(in)) {
+    R d = ROBOWIRE_OPTIMIZE_SIZE ? R{std::in_place} : R{codec::unset_t{}};
+    if (const error e = check_frame<frame_for<Message>>(in)) {
         set_frame(d, nullptr);
         d = e;
         return d;
@@ -337,13 +375,14 @@ constexpr decode_result decode_at(const std::uint8_t* data, std::size_t size) no
             // Bytes 1..8 (AA DEV CMD P1..P4 55, the markers checked) become
             // 01 DEV CMD P1..P4 01: result's flag, the frame and its flag, one store.
             std::uint64_t w;
-            std::memcpy(&w, data + 1, 8);
+            std::memcpy(&w, frame_word_source(data + 1), 8);
             w ^= std::uint64_t{start2 ^ 1u} | std::uint64_t{end1 ^ 1u} << 56;
             std::memcpy(reinterpret_cast<unsigned char*>(&d) + at, &w, 8);
         } else {  // another layout, or a constant expression (where the message sets the flag)
             const osp::frame f{in[2], in[3], {in[4], in[5], in[6], in[7]}};
             set_frame(d, &f);
-            if (!ROBOWIRE_CONSTANT_EVALUATED()) static_cast<result<message>&>(d) = result<message>(message{});
+            using M = typename dependent_message<sizeof(Message)>::type;
+            if (!ROBOWIRE_CONSTANT_EVALUATED()) static_cast<result<M>&>(d) = result<M>(M{});
         }
         decode_by_key<true>(d, in, std::make_index_sequence<std::variant_size_v<Message>>{});
     } else {
@@ -364,7 +403,8 @@ inline namespace ROBOWIRE_MODE_NAMESPACE {
 // Errors: too_short / too_long, bad_header, bad_trailer, unknown_message
 // (offset 2), and the message's own field errors.
 template <class Message>
-[[nodiscard]] ROBOWIRE_ALWAYS_INLINE constexpr decode_result decode(std::span<const std::uint8_t> in) noexcept {
+[[nodiscard]] ROBOWIRE_ALWAYS_INLINE constexpr impl::decode_result_t<sizeof(Message)> decode(
+    std::span<const std::uint8_t> in) noexcept {
     static_assert(impl::keys_distinct<Message>(),
                   "osp::decode: two messages share a DEV/CMD pair (the second could never be decoded)");
     return impl::decode_at<Message>(in.data(), in.size());
@@ -449,15 +489,16 @@ template <class Handler>
 template <class Message = message>
 constexpr std::string_view describe_error(const error& e, std::span<const std::uint8_t> in,
                                           std::span<char> buf) noexcept {
-    if (in.size() < 4) return robowire::describe_error<osp::frame>(e, buf);
+    if (in.size() < 4) return robowire::describe_error<impl::frame_for<Message>>(e, buf);
     return codec::describe_keyed_error<Message, 2, 3>(e, in, buf);
 }
 // The same for the error of osp::decode's result, from the DEV and CMD it
 // keeps (frame()); osp::frame's line when the markers or the length were wrong.
 template <class Message = message>
-constexpr std::string_view describe_error(const decode_result& d, std::span<char> buf) noexcept {
+constexpr std::string_view describe_error(const impl::decode_result_t<sizeof(Message)>& d,
+                                          std::span<char> buf) noexcept {
     const error e = d.code() == errc::ok ? error{} : codec::unchecked_error(d);
-    if (!d.frame()) return robowire::describe_error<osp::frame>(e, buf);
+    if (!d.frame()) return robowire::describe_error<impl::frame_for<Message>>(e, buf);
     const auto& f = *d.frame();
     const std::uint8_t in[frame_size] = {start1,      start2,      f.device,    f.command, f.params[0],
                                          f.params[1], f.params[2], f.params[3], end1,      end2};
