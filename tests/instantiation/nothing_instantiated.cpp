@@ -28,3 +28,6 @@ template <> inline constexpr auto robowire::fuzz_tokens_v<osp::message> = std::a
 
 // Nor osp::decode_result, nor the variant of every OSP message it holds.
 template <> class robowire::result<osp::message>;
+// Nor any advertisement walk (ad::reader, ad::find, BuWizz3's and NAVBOT's parsers).
+template <> class std::optional<robowire::ad::structure>;
+template <> class robowire::result<std::optional<bw::advertisement>>;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <type_traits>
 
 #include "../core/advertising.hpp"
 #include "../core/text.hpp"
@@ -31,8 +32,9 @@ struct advertisement {
 inline constexpr std::array<std::uint8_t, 4> manufacturer_prefix{0x4E, 0x05, 0x42, 0x57};
 
 namespace impl {
+template <class Deferred>
 constexpr void read_structures(std::span<const std::uint8_t> adv, advertisement& out, error& err) noexcept {
-    ad::reader r(adv);
+    ad::basic_reader<Deferred> r(adv);
     while (auto s = r.next()) {
         const auto d = s->data;
         if (s->type == ad::manufacturer_data && d.size() >= 8 && d[0] == manufacturer_prefix[0] &&
@@ -69,17 +71,21 @@ constexpr void read_structures(std::span<const std::uint8_t> adv, advertisement&
 // nullopt when neither BuWizz3 manufacturer data nor the BuWizz3 service UUID
 // is present; bad_length (offset of the bad length byte; scan response
 // offsets count after the advertisement) when the AD data is malformed.
-constexpr result<std::optional<advertisement>> parse_advertisement(
-    std::span<const std::uint8_t> adv, std::span<const std::uint8_t> scan_response = {}) noexcept {
+// Returns a result<std::optional<advertisement>> (a template: a file that
+// includes this header but parses nothing instantiates neither).
+template <class Deferred = void>
+constexpr auto parse_advertisement(std::span<const std::uint8_t> adv,
+                                   std::span<const std::uint8_t> scan_response = {}) noexcept {
+    using found = std::optional<std::conditional_t<true, advertisement, Deferred>>;
     advertisement out;
     error err{};
-    impl::read_structures(adv, out, err);
+    impl::read_structures<Deferred>(adv, out, err);
     error err2{};
-    impl::read_structures(scan_response, out, err2);
-    if (err.code != errc::ok) return err;
-    if (err2.code != errc::ok) return fail(err2.code, adv.size() + err2.offset);
-    if (!out.has_manufacturer_data && !out.has_service_uuid) return std::optional<advertisement>{};
-    return std::optional<advertisement>{out};
+    impl::read_structures<Deferred>(scan_response, out, err2);
+    if (err.code != errc::ok) return result<found>(err);
+    if (err2.code != errc::ok) return result<found>(fail(err2.code, adv.size() + err2.offset));
+    if (!out.has_manufacturer_data && !out.has_service_uuid) return result<found>(found{});
+    return result<found>(found{out});
 }
 
 }  // namespace robowire::buwizz3

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <type_traits>
 
 #include "result.hpp"
 
@@ -29,15 +30,18 @@ struct structure {
     std::size_t offset = 0;
 };
 
-// Walks the AD structures of one advertisement or scan response.
-// A zero length byte ends the data (the rest is padding). A length that runs
-// past the end stops the walk; error() then says where.
-class reader {
+// ad::reader (below). A template, as find and validate are: a file that
+// includes this header but walks no advertisement instantiates no
+// std::optional of them. Deferred: void.
+template <class Deferred = void>
+class basic_reader {
+    using structure_t = std::conditional_t<true, structure, Deferred>;  // ad::structure
+
 public:
-    constexpr explicit reader(std::span<const std::uint8_t> adv) noexcept : adv_(adv) {}
+    constexpr explicit basic_reader(std::span<const std::uint8_t> adv) noexcept : adv_(adv) {}
 
     // The next structure, or nullopt at the end or at a malformed length.
-    constexpr std::optional<structure> next() noexcept {
+    constexpr std::optional<structure_t> next() noexcept {
         if (done_ || pos_ >= adv_.size()) {
             done_ = true;
             return std::nullopt;
@@ -52,7 +56,7 @@ public:
             error_ = fail(errc::bad_length, pos_);
             return std::nullopt;
         }
-        structure s{adv_[pos_ + 1], adv_.subspan(pos_ + 2, len - 1), pos_};
+        structure_t s{adv_[pos_ + 1], adv_.subspan(pos_ + 2, len - 1), pos_};
         pos_ += 1 + len;
         return s;
     }
@@ -61,12 +65,12 @@ public:
 
     class iterator {
     public:
-        using value_type = structure;
+        using value_type = structure_t;
         using difference_type = std::ptrdiff_t;
         constexpr iterator() noexcept = default;
-        constexpr explicit iterator(reader* r) noexcept : r_(r) { ++*this; }
-        constexpr const structure& operator*() const noexcept { return *cur_; }
-        constexpr const structure* operator->() const noexcept { return &*cur_; }
+        constexpr explicit iterator(basic_reader* r) noexcept : r_(r) { ++*this; }
+        constexpr const structure_t& operator*() const noexcept { return *cur_; }
+        constexpr const structure_t* operator->() const noexcept { return &*cur_; }
         constexpr iterator& operator++() noexcept {
             cur_ = r_->next();
             return *this;
@@ -75,8 +79,8 @@ public:
         constexpr bool operator==(std::default_sentinel_t) const noexcept { return !cur_.has_value(); }
 
     private:
-        reader* r_ = nullptr;
-        std::optional<structure> cur_{};
+        basic_reader* r_ = nullptr;
+        std::optional<structure_t> cur_{};
     };
     // Single pass: begin() continues where the walk is.
     constexpr iterator begin() noexcept { return iterator(this); }
@@ -89,22 +93,32 @@ private:
     robowire::error error_{};
 };
 
-// Data of the first structure of `type`, if any (walk stops at malformed data).
-[[nodiscard]] constexpr std::optional<std::span<const std::uint8_t>> find(std::span<const std::uint8_t> adv,
-                                                                          std::uint8_t type) noexcept {
-    reader r(adv);
+// Walks the AD structures of one advertisement or scan response.
+// A zero length byte ends the data (the rest is padding). A length that runs
+// past the end stops the walk; error() then says where.
+using reader = basic_reader<>;
+
+// Data of the first structure of `type`, if any (walk stops at malformed
+// data): a std::optional<std::span<const std::uint8_t>>.
+template <class Deferred = void>
+[[nodiscard]] constexpr auto find(std::span<const std::uint8_t> adv, std::uint8_t type) noexcept {
+    using found = std::optional<std::conditional_t<true, std::span<const std::uint8_t>, Deferred>>;
+    basic_reader<Deferred> r(adv);
     while (auto s = r.next())
-        if (s->type == type) return s->data;
-    return std::nullopt;
+        if (s->type == type) return found(s->data);
+    return found();
 }
 
-// Number of structures if the whole advertisement is well formed, else the error.
-[[nodiscard]] constexpr result<std::size_t> validate(std::span<const std::uint8_t> adv) noexcept {
-    reader r(adv);
+// Number of structures if the whole advertisement is well formed, else the
+// error: a result<std::size_t>.
+template <class Deferred = void>
+[[nodiscard]] constexpr auto validate(std::span<const std::uint8_t> adv) noexcept {
+    using count = result<std::conditional_t<true, std::size_t, Deferred>>;
+    basic_reader<Deferred> r(adv);
     std::size_t n = 0;
     while (r.next()) ++n;
-    if (r.error().code != errc::ok) return r.error();
-    return n;
+    if (r.error().code != errc::ok) return count(r.error());
+    return count(n);
 }
 
 }  // namespace robowire::ad
