@@ -33,36 +33,36 @@ inline constexpr std::array<std::uint8_t, 4> manufacturer_prefix{0x4E, 0x05, 0x4
 
 namespace impl {
 template <class Deferred>
-constexpr void read_structures(std::span<const std::uint8_t> adv, advertisement& out, error& err) noexcept {
-    ad::basic_reader<Deferred> r(adv);
+constexpr void read_structures(std::span<const std::uint8_t> ad_data, advertisement& seen, error& walk_error) noexcept {
+    ad::basic_reader<Deferred> r(ad_data);
     while (auto s = r.next()) {
         const auto d = s->data;
         if (s->type == ad::manufacturer_data && d.size() >= 8 && d[0] == manufacturer_prefix[0] &&
             d[1] == manufacturer_prefix[1] && d[2] == manufacturer_prefix[2] && d[3] == manufacturer_prefix[3]) {
-            out.has_manufacturer_data = true;
+            seen.has_manufacturer_data = true;
             if (d[4] == 0x42 && d[5] == 0x4C) {  // 'B' 'L'
-                out.mode = device_mode::bootloader;
-                out.firmware_version = {0, 0};
+                seen.mode = device_mode::bootloader;
+                seen.firmware_version = {0, 0};
             } else {
-                out.mode = device_mode::application;
-                out.firmware_version = {d[4], d[5]};
+                seen.mode = device_mode::application;
+                seen.firmware_version = {d[4], d[5]};
             }
-            out.serial_low16 = static_cast<std::uint16_t>(d[6] | d[7] << 8);
+            seen.serial_low16 = static_cast<std::uint16_t>(d[6] | d[7] << 8);
         } else if (s->type == ad::incomplete_uuid128_list || s->type == ad::complete_uuid128_list) {
             const auto want = service_uuid.on_air();
             for (std::size_t i = 0; i + 16 <= d.size(); i += 16) {
                 bool same = true;
                 for (std::size_t k = 0; k < 16; ++k) same = same && d[i + k] == want[k];
-                if (same) out.has_service_uuid = true;
+                if (same) seen.has_service_uuid = true;
             }
         } else if (s->type == ad::complete_local_name || s->type == ad::shortened_local_name) {
             std::array<char, 29> chars{};
             const std::size_t n = d.size() < chars.size() ? d.size() : chars.size();
             for (std::size_t i = 0; i < n; ++i) chars[i] = static_cast<char>(d[i]);
-            out.local_name = text<29>::make(std::string_view(chars.data(), n)).value();
+            seen.local_name = text<29>::make(std::string_view(chars.data(), n)).value();
         }
     }
-    if (r.error().code != errc::ok && err.code == errc::ok) err = r.error();
+    if (r.error().code != errc::ok && walk_error.code == errc::ok) walk_error = r.error();
 }
 }  // namespace impl
 
@@ -74,18 +74,18 @@ constexpr void read_structures(std::span<const std::uint8_t> adv, advertisement&
 // Returns a result<std::optional<advertisement>> (a template: a file that
 // includes this header but parses nothing instantiates neither).
 template <class Deferred = void>
-constexpr auto parse_advertisement(std::span<const std::uint8_t> adv,
-                                   std::span<const std::uint8_t> scan_response = {}) noexcept {
+constexpr auto parse_advertisement(std::span<const std::uint8_t> ad_data,
+                                   std::span<const std::uint8_t> scan_data = {}) noexcept {
     using found = std::optional<std::conditional_t<true, advertisement, Deferred>>;
-    advertisement out;
-    error err{};
-    impl::read_structures<Deferred>(adv, out, err);
-    error err2{};
-    impl::read_structures<Deferred>(scan_response, out, err2);
-    if (err.code != errc::ok) return result<found>(err);
-    if (err2.code != errc::ok) return result<found>(fail(err2.code, adv.size() + err2.offset));
-    if (!out.has_manufacturer_data && !out.has_service_uuid) return result<found>(found{});
-    return result<found>(found{out});
+    advertisement seen;
+    error ad_error{};
+    impl::read_structures<Deferred>(ad_data, seen, ad_error);
+    error scan_error{};
+    impl::read_structures<Deferred>(scan_data, seen, scan_error);
+    if (ad_error.code != errc::ok) return result<found>(ad_error);
+    if (scan_error.code != errc::ok) return result<found>(fail(scan_error.code, ad_data.size() + scan_error.offset));
+    if (!seen.has_manufacturer_data && !seen.has_service_uuid) return result<found>(found{});
+    return result<found>(found{seen});
 }
 
 }  // namespace robowire::buwizz3

@@ -38,7 +38,7 @@ class basic_reader {
     using structure_t = std::conditional_t<true, structure, Deferred>;  // ad::structure
 
 public:
-    constexpr explicit basic_reader(std::span<const std::uint8_t> adv) noexcept : adv_(adv) {}
+    constexpr explicit basic_reader(std::span<const std::uint8_t> ad_data) noexcept : adv_(ad_data) {}
 
     // The next structure, or nullopt at the end or at a malformed length.
     constexpr std::optional<structure_t> next() noexcept {
@@ -101,20 +101,20 @@ using reader = basic_reader<>;
 // Data of the first structure of `type`, if any (walk stops at malformed
 // data): a std::optional<std::span<const std::uint8_t>>.
 template <class Deferred = void>
-[[nodiscard]] constexpr auto find(std::span<const std::uint8_t> adv, std::uint8_t type) noexcept {
+[[nodiscard]] constexpr auto find(std::span<const std::uint8_t> ad_data, std::uint8_t ad_type) noexcept {
     using found = std::optional<std::conditional_t<true, std::span<const std::uint8_t>, Deferred>>;
-    basic_reader<Deferred> r(adv);
+    basic_reader<Deferred> r(ad_data);
     while (auto s = r.next())
-        if (s->type == type) return found(s->data);
+        if (s->type == ad_type) return found(s->data);
     return found();
 }
 
 // Number of structures if the whole advertisement is well formed, else the
 // error: a result<std::size_t>.
 template <class Deferred = void>
-[[nodiscard]] constexpr auto validate(std::span<const std::uint8_t> adv) noexcept {
+[[nodiscard]] constexpr auto validate(std::span<const std::uint8_t> ad_data) noexcept {
     using count = result<std::conditional_t<true, std::size_t, Deferred>>;
-    basic_reader<Deferred> r(adv);
+    basic_reader<Deferred> r(ad_data);
     std::size_t n = 0;
     while (r.next()) ++n;
     if (r.error().code != errc::ok) return count(r.error());

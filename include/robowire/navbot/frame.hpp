@@ -68,8 +68,8 @@ constexpr bool is_navbot_name(std::string_view name) noexcept {
 
 // Does the advertisement carry a NAVBOT-ES02 local name (complete or shortened)?
 template <class Deferred = void>  // a template: including this header instantiates no reader
-constexpr bool matches_advertisement(std::span<const std::uint8_t> adv) noexcept {
-    ad::basic_reader<Deferred> r(adv);
+constexpr bool matches_advertisement(std::span<const std::uint8_t> ad_data) noexcept {
+    ad::basic_reader<Deferred> r(ad_data);
     while (auto s = r.next()) {
         if (s->type != ad::complete_local_name && s->type != ad::shortened_local_name) continue;
         std::array<char, 31> chars{};
