@@ -7,7 +7,6 @@
 #include <cstdint>
 #include <optional>
 #include <span>
-#include <type_traits>
 
 #include "../core/advertising.hpp"
 #include "../core/text.hpp"
@@ -76,7 +75,7 @@ constexpr void read_structures(std::span<const std::uint8_t> ad_data, advertisem
 template <class Deferred = void>
 constexpr auto parse_advertisement(std::span<const std::uint8_t> ad_data,
                                    std::span<const std::uint8_t> scan_data = {}) noexcept {
-    using found = std::optional<std::conditional_t<true, advertisement, Deferred>>;
+    using found = std::optional<codec::deferred_t<advertisement, Deferred>>;
     advertisement seen;
     error ad_error{};
     impl::read_structures<Deferred>(ad_data, seen, ad_error);

@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <optional>
 #include <span>
-#include <type_traits>
 
 #include "result.hpp"
 
@@ -35,7 +34,7 @@ struct structure {
 // std::optional of them. Deferred: void.
 template <class Deferred = void>
 class basic_reader {
-    using structure_t = std::conditional_t<true, structure, Deferred>;  // ad::structure
+    using structure_t = codec::deferred_t<structure, Deferred>;
 
 public:
     constexpr explicit basic_reader(std::span<const std::uint8_t> ad_data) noexcept : adv_(ad_data) {}
@@ -102,7 +101,7 @@ using reader = basic_reader<>;
 // data): a std::optional<std::span<const std::uint8_t>>.
 template <class Deferred = void>
 [[nodiscard]] constexpr auto find(std::span<const std::uint8_t> ad_data, std::uint8_t ad_type) noexcept {
-    using found = std::optional<std::conditional_t<true, std::span<const std::uint8_t>, Deferred>>;
+    using found = std::optional<codec::deferred_t<std::span<const std::uint8_t>, Deferred>>;
     basic_reader<Deferred> r(ad_data);
     while (auto s = r.next())
         if (s->type == ad_type) return found(s->data);
@@ -113,7 +112,7 @@ template <class Deferred = void>
 // error: a result<std::size_t>.
 template <class Deferred = void>
 [[nodiscard]] constexpr auto validate(std::span<const std::uint8_t> ad_data) noexcept {
-    using count = result<std::conditional_t<true, std::size_t, Deferred>>;
+    using count = result<codec::deferred_t<std::size_t, Deferred>>;
     basic_reader<Deferred> r(ad_data);
     std::size_t n = 0;
     while (r.next()) ++n;

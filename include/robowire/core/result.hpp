@@ -436,6 +436,11 @@ template <class D, class T>
 constexpr const T& deferred(const T& x) noexcept {
     return x;
 }
+// The type T, named so that it depends on D: a template that uses it (a
+// result<T>, a std::optional<T>) instantiates it only when it is itself
+// instantiated.
+template <class T, class D>
+using deferred_t = std::conditional_t<true, T, D>;
 }  // namespace codec
 
 namespace detail::inline ROBOWIRE_MODE_NAMESPACE {

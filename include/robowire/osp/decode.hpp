@@ -30,9 +30,6 @@ template <auto...>
 struct dependent_message {
     using type = message;
 };
-// osp::frame, named through a template argument (see dependent_message).
-template <class T>
-using frame_for = std::conditional_t<true, osp::frame, T>;
 // osp::decode_result, named through template arguments (see dependent_message).
 template <auto... X>
 using decode_result_t = decode_result_of<typename dependent_message<X...>::type>;
@@ -365,7 +362,7 @@ constexpr decode_result_t<sizeof(Message)> decode_at(const std::uint8_t* data, s
     // A message or an error on every path below (under ROBOWIRE_OPTIMIZE_SIZE: a
     // default message first, less code).
     R d = ROBOWIRE_OPTIMIZE_SIZE ? R{std::in_place} : R{codec::unset_t{}};
-    if (const error e = check_frame<frame_for<Message>>(in)) {
+    if (const error e = check_frame<codec::deferred_t<osp::frame, Message>>(in)) {
         set_frame(d, nullptr);
         d = e;
         return d;
@@ -489,7 +486,7 @@ template <class Handler>
 template <class Message = message>
 constexpr std::string_view describe_error(const error& e, std::span<const std::uint8_t> in,
                                           std::span<char> buf) noexcept {
-    if (in.size() < 4) return robowire::describe_error<impl::frame_for<Message>>(e, buf);
+    if (in.size() < 4) return robowire::describe_error<codec::deferred_t<osp::frame, Message>>(e, buf);
     return codec::describe_keyed_error<Message, 2, 3>(e, in, buf);
 }
 // The same for the error of osp::decode's result, from the DEV and CMD it
@@ -498,7 +495,7 @@ template <class Message = message>
 constexpr std::string_view describe_error(const impl::decode_result_t<sizeof(Message)>& d,
                                           std::span<char> buf) noexcept {
     const error e = d.code() == errc::ok ? error{} : codec::unchecked_error(d);
-    if (!d.frame()) return robowire::describe_error<impl::frame_for<Message>>(e, buf);
+    if (!d.frame()) return robowire::describe_error<codec::deferred_t<osp::frame, Message>>(e, buf);
     const auto& f = *d.frame();
     const std::uint8_t in[frame_size] = {start1,      start2,      f.device,    f.command, f.params[0],
                                          f.params[1], f.params[2], f.params[3], end1,      end2};
