@@ -322,19 +322,19 @@ inline constexpr bool frame_by_memcpy = true;
 #else
 inline constexpr bool frame_by_memcpy = false;
 #endif
-#if defined(__clang__) && (defined(__x86_64__) || defined(__aarch64__))
-ROBOWIRE_ALWAYS_INLINE const std::uint8_t* frame_word_source(const std::uint8_t* p) noexcept {
-    __asm__("" : "+r"(p));  // no instruction: p, unknown to the optimizer
-    return p;
-}
-inline constexpr bool frame_by_word = ROBOWIRE_COPY_RUNS && std::endian::native == std::endian::little;
-#elif defined(__clang__)
-ROBOWIRE_ALWAYS_INLINE const std::uint8_t* frame_word_source(const std::uint8_t* p) noexcept { return p; }
-inline constexpr bool frame_by_word = false;
+#if defined(__clang__) && !defined(__x86_64__) && !defined(__aarch64__)
+inline constexpr bool frame_by_word = false;  // no empty asm to hide the address with (frame_word_source)
 #else
-ROBOWIRE_ALWAYS_INLINE const std::uint8_t* frame_word_source(const std::uint8_t* p) noexcept { return p; }
 inline constexpr bool frame_by_word = ROBOWIRE_COPY_RUNS && std::endian::native == std::endian::little;
 #endif
+// The 8-byte word's address: p, unknown to clang++'s optimizer (an empty
+// asm, no instruction); p itself elsewhere.
+ROBOWIRE_ALWAYS_INLINE const std::uint8_t* frame_word_source(const std::uint8_t* p) noexcept {
+#if defined(__clang__) && (defined(__x86_64__) || defined(__aarch64__))
+    __asm__("" : "+r"(p));
+#endif
+    return p;
+}
 // Where decode_result keeps result's flag, DEV, CMD, P1..P4 and the frame's
 // flag as 8 bytes in a row (64-bit hosts), the offset of the first; else 0.
 // Little-endian hosts only. Read from two decode_results built at run time:
