@@ -86,6 +86,18 @@ TEST_CASE("hex formatting into a caller's buffer", "[core][bytes]") {
     STATIC_REQUIRE(hex_is(abc, "01:5C:FF", ':'));
     STATIC_REQUIRE(hex_is({}, ""));
     STATIC_REQUIRE(hex_size(3) == 8);
+    // At run time to_hex reads a table of digit pairs: the same texts, and
+    // every byte value's two digits (high nibble, then low).
+    CHECK(hex_is(abc, "01 5C FF"));
+    CHECK(hex_is(abc, "015CFF", '\0'));
+    CHECK(hex_is(abc, "01:5C:FF", ':'));
+    constexpr std::string_view digits = "0123456789ABCDEF";
+    for (unsigned v = 0; v < 256; ++v) {
+        const std::array<std::uint8_t, 2> two{static_cast<std::uint8_t>(v), static_cast<std::uint8_t>(255 - v)};
+        const std::array<char, 5> want{digits[v >> 4], digits[v & 15], '-', digits[(255 - v) >> 4],
+                                       digits[(255 - v) & 15]};
+        CHECK(hex_is(two, std::string_view(want.data(), want.size()), '-'));
+    }
     std::array<char, 7> small{};
     const auto r = to_hex(abc, small);
     REQUIRE_FALSE(r);
