@@ -45,6 +45,19 @@ constexpr std::int16_t fields_of(std::span<const std::uint8_t> in, error& e) {
     e = codec::decode_fields(p, in);
     return p.seq;
 }
+// decode_fields for an output discarded on an error: the same fields and errors.
+constexpr std::int16_t fields_once(std::span<const std::uint8_t> in, error& e) {
+    demo3::pong p{};
+    e = codec::decode_fields(p, in, codec::discarded_on_error);
+    return e.code == errc::ok ? p.seq : std::int16_t{-1};
+}
+// A dispatcher's result holding alternative 0, its flag set: alternative 1
+// made in its place, the flag kept.
+constexpr result<demo3::any> remade(std::int16_t seq) {
+    result<demo3::any> r = demo3::any{demo3::ping{7}};
+    codec::make_alternative_keep_flag<1>(r).seq = seq;
+    return r;
+}
 // check_fields, then store_fields into a frame of zeros; the error, if any.
 constexpr result<bytes<4>> store(const demo3::pong& p) {
     auto b = bytes<4>::zeros(4);
@@ -90,6 +103,17 @@ TEST_CASE("codec: fixed bytes and fields, as a dispatcher checks and decodes the
         error err{};
         return fields_of(test::hex("A5 02 18 FC"), err) == -1000 && err == error{};
     }());
+    CHECK(fields_once(test::hex("00 00 E8 03"), e) == 1000);
+    CHECK(e == error{});
+    CHECK(fields_once(test::hex("A5 02 18 FC"), e) == -1000);
+    CHECK(fields_once(test::hex("A5 02 E9 03"), e) == -1);
+    CHECK(e == error{errc::value_out_of_range, 2});
+    STATIC_REQUIRE([] {
+        error err{};
+        return fields_once(test::hex("A5 02 17 FC"), err) == -1 && err == error{errc::value_out_of_range, 2};
+    }());
+    STATIC_REQUIRE(remade(-5).value() == demo3::any{demo3::pong{-5}});
+    CHECK(remade(300).value() == demo3::any{demo3::pong{300}});
 }
 
 // decode_at<M>(pointer, size): decode<M> of the same bytes, errors included;

@@ -194,6 +194,30 @@ ROBOWIRE_ALWAYS_INLINE constexpr error decode_fields(M& out, std::span<const std
     return detail::decode_body<M, ROBOWIRE_OPTIMIZE_SIZE, false, false>(out,
                                                                         detail::in_bytes(in.data(), max_size_v<M>));
 }
+// Tag of decode_fields' form for an output discarded on an error.
+struct discarded_on_error_t {
+    explicit discarded_on_error_t() = default;
+};
+inline constexpr discarded_on_error_t discarded_on_error{};
+// As decode_fields, for an output discarded on an error (a dispatcher's
+// result): on an error `out` may hold some fields. Less code to compile: a
+// message whose fields take every value of their wire bytes is written in
+// one pass, with no check; under ROBOWIRE_OPTIMIZE_SIZE, every message.
+template <described M>
+ROBOWIRE_ALWAYS_INLINE constexpr error decode_fields(M& out, std::span<const std::uint8_t> in,
+                                                     discarded_on_error_t) noexcept {
+    const detail::in_bytes known(in.data(), max_size_v<M>);
+    constexpr auto fields = std::make_index_sequence<detail::field_count_v<M>>{};
+    if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
+        return detail::decode_body<M, true, false, false>(out, known);
+    } else if constexpr (!detail::reports_trailing<M> && detail::unchecked_record<M>(fields)) {
+        detail::prechecked none{};
+        (void)detail::decode_record<M>(out, known, 0, none, fields);
+        return {};
+    } else {
+        return detail::decode_body<M, false, false, false>(out, known);
+    }
+}
 }  // namespace codec::inline ROBOWIRE_MODE_NAMESPACE
 
 namespace detail::inline ROBOWIRE_MODE_NAMESPACE {

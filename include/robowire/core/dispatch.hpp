@@ -48,6 +48,22 @@ inline constexpr void visit_held(Variant& v, F&& f) {
 }
 }  // namespace codec
 
+namespace detail {
+// The index of Variant's smallest alternative (the first of them).
+template <class Variant, std::size_t... I>
+constexpr std::size_t smallest_alternative(std::index_sequence<I...>) noexcept {
+    constexpr std::size_t sizes[] = {sizeof(std::variant_alternative_t<I, Variant>)...};
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < sizeof...(I); ++i)
+        if (sizes[i] < sizes[best]) best = i;
+    return best;
+}
+template <class Variant>
+constexpr std::size_t smallest_alternative() noexcept {
+    return smallest_alternative<Variant>(std::make_index_sequence<std::variant_size_v<Variant>>{});
+}
+}  // namespace detail
+
 namespace codec::inline ROBOWIRE_MODE_NAMESPACE {
 // Makes alternative I of the variant in r, in place, and returns it, for a
 // dispatcher's result: one that holds nothing yet (result(codec::unset_t)),
@@ -59,9 +75,14 @@ ROBOWIRE_ALWAYS_INLINE constexpr auto& make_alternative(result<Variant>& r) noex
 }
 // As make_alternative (not under ROBOWIRE_OPTIMIZE_SIZE), for a codec that has
 // stored r's flag (as true) already, with other bytes: at run time the flag is left as it is.
+// The variant is made holding its smallest alternative, then alternative I
+// is emplaced: one variant constructor for every I (the constructor for index
+// I instantiates I nested ones), and the first store is dead.
 template <std::size_t I, class Variant>
 ROBOWIRE_ALWAYS_INLINE constexpr auto& make_alternative_keep_flag(result<Variant>& r) noexcept {
-    return *std::get_if<I>(&detail::build_value_keep_flag(r, std::in_place_index<I>));
+    constexpr std::size_t first = detail::smallest_alternative<Variant>();
+    if constexpr (I == first) return *std::get_if<I>(&detail::build_value_keep_flag(r, std::in_place_index<I>));
+    else return emplace_alternative<I>(detail::build_value_keep_flag(r, std::in_place_index<first>));
 }
 }  // namespace codec::inline ROBOWIRE_MODE_NAMESPACE
 

@@ -167,8 +167,9 @@ template <std::size_t I, bool FlagSet = false>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_message(decode_result_t<I>& d, std::span<const std::uint8_t> in) noexcept {
     if constexpr (FlagSet) {
         auto& m = codec::make_alternative_keep_flag<I>(d);
-        if (const error e = codec::decode_fields(m, in); e.code != errc::ok) d = e;
-    } else if (const error e = codec::decode_fields(codec::make_alternative<I>(d), in); e.code != errc::ok) {
+        if (const error e = codec::decode_fields(m, in, codec::discarded_on_error); e.code != errc::ok) d = e;
+    } else if (const error e = codec::decode_fields(codec::make_alternative<I>(d), in, codec::discarded_on_error);
+               e.code != errc::ok) {
         d = e;
     }
 }
