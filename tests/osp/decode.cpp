@@ -46,6 +46,13 @@ TEST_CASE("osp: every message round trips through the variant", "[osp]") {
         [](auto t) { CHECK(osp::encode(typename decltype(t)::type{})->size() == frame_size); });
 }
 
+// Encoding a temporary variant at namespace scope, in a constant expression
+// (g++ 12 cannot evaluate std::get_if on such a temporary there): voltage
+// 16.50 V is FF AA 02 12 72 06 00 00 55 77.
+static_assert(osp::encode(message{obp1::voltage{1650}})->span()[4] == 0x72);
+static_assert(robowire::encode(message{obp1::voltage{1650}})->span()[5] == 0x06);
+static_assert(osp::encode(message{obp1::request_soc{}})->span()[3] == 0x01);
+
 namespace {
 // A battery pack's firmware: answers what it knows, ignores set_angle, and
 // takes requests it only sometimes answers.

@@ -37,10 +37,12 @@ inline constexpr auto& emplace_alternative(Variant& v) noexcept {
 // Calls f(x) for the alternative x that v holds (nothing if v is valueless):
 // one compare per alternative. Cheaper to compile than std::visit, which
 // instantiates a table of functions and checks every visitor result type.
+// std::get, not std::get_if: g++ 12 cannot evaluate get_if on a temporary
+// variant in a constant expression at namespace scope.
 template <class Variant, class F, std::size_t... I>
 inline constexpr void visit_held(Variant& v, F&& f, std::index_sequence<I...>) {
     const std::size_t held = v.index();
-    (void)((held == I ? (f(*std::get_if<I>(&v)), true) : false) || ...);
+    (void)((held == I ? (f(std::get<I>(v)), true) : false) || ...);
 }
 template <class Variant, class F>
 inline constexpr void visit_held(Variant& v, F&& f) {
@@ -299,8 +301,8 @@ template <class Variant, class Written, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr error encode_held(const Variant& v, std::uint8_t* out_data, std::size_t out_size,
                                                    Written& written, std::index_sequence<I...>) noexcept {
     error e = fail(errc::unknown_message, 0);
-    const std::size_t held = v.index();
-    (void)((held == I ? (e = encode_into(*std::get_if<I>(&v), out_data, out_size, written), true) : false) || ...);
+    const std::size_t held = v.index();  // std::get, not get_if: see visit_held
+    (void)((held == I ? (e = encode_into(std::get<I>(v), out_data, out_size, written), true) : false) || ...);
     return e;
 }
 }  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE
