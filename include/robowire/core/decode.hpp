@@ -241,15 +241,16 @@ constexpr bool fixed_within(const fixed_byte* fixed, std::size_t n, std::size_t 
 template <std::size_t Known, class M>
 inline constexpr bool fixed_within_min_v = fixed_within(table_v<M>.fixed.data(), fixed_count_v<M>, Known,
                                                         table_v<M>.min_size());
-// The fixed bytes of M but the one at offset Known, as masked words of the
-// shortest input (ROBOWIRE_COPY_RUNS targets): each word a load, an xor and an
-// and (a lone word: a load and a compare), as a hand-written decoder compares
-// its markers. The words are as
-// narrow as takes no more of them (a 4-byte header: one 32-bit compare).
+// The fixed bytes of M but the one at offset Known, as words of the shortest
+// input (ROBOWIRE_COPY_RUNS targets), each compared on its own as a careful
+// hand-written decoder compares its markers: a word of fixed bytes only is
+// one compare with memory (x86-64: `cmp $imm, mem`), others are masked. As few
+// words as cover the bytes, each narrowed to the bytes it covers (OSP's
+// voltage: FF AA 02 12 as 4 bytes, 55 77 as 2).
 // Worked out by plain functions (one definition for every message: cheaper
 // to compile than a lambda and a local type per message).
 struct fixed_word {
-    std::size_t start = 0;
+    std::size_t start = 0, width = 0;
     std::uint64_t mask = 0, value = 0;
 };
 inline constexpr std::size_t max_fixed_words = 16;  // messages with more fixed bytes compare them one by one
@@ -271,9 +272,25 @@ constexpr fixed_words cover_fixed(const fixed_byte* fixed, std::size_t n, std::s
             covered = covered || (at >= r.w[k].start && at < r.w[k].start + width);
         if (!covered) r.w[r.count++].start = at + width <= min ? at : min - width;
     }
+    for (std::size_t k = 0; k < r.count; ++k) {
+        // Narrowed to the fixed bytes it covers (a whole word compares with memory).
+        std::size_t lo = min, hi = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t at = fixed[i].offset;
+            if (at != known && at >= r.w[k].start && at < r.w[k].start + width) {
+                lo = at < lo ? at : lo;
+                hi = at > hi ? at : hi;
+            }
+        }
+        std::size_t w = 1;
+        while (w < hi - lo + 1) w *= 2;
+        r.w[k].width = w;
+        r.w[k].start = lo + w <= min ? lo : min - w;
+    }
     for (std::size_t k = 0; k < r.count; ++k)
         for (std::size_t i = 0; i < n; ++i)
-            if (fixed[i].offset != known && fixed[i].offset >= r.w[k].start && fixed[i].offset < r.w[k].start + width) {
+            if (fixed[i].offset != known && fixed[i].offset >= r.w[k].start &&
+                fixed[i].offset < r.w[k].start + r.w[k].width) {
                 const auto shift = 8 * (fixed[i].offset - r.w[k].start);
                 r.w[k].mask |= std::uint64_t{0xFF} << shift;
                 r.w[k].value |= std::uint64_t{fixed[i].value} << shift;
@@ -291,27 +308,22 @@ constexpr fixed_words make_fixed_words(const fixed_byte* fixed, std::size_t n, s
 template <std::size_t Known, class M>
 inline constexpr fixed_words fixed_words_v = make_fixed_words(table_v<M>.fixed.data(), fixed_count_v<M>, Known,
                                                               table_v<M>.min_size());
+// Word K of fixed_words_v<Known, M> matches `in`: one compare, with memory
+// where the word is whole (x86-64: an immediate operand).
+template <std::size_t Known, class M, std::size_t K>
+ROBOWIRE_ALWAYS_INLINE bool fixed_word_match(const std::uint8_t* in) noexcept {
+    constexpr auto& word_k = fixed_words_v<Known, M>.w[K];
+    using word = typename uint_of_size<word_k.width>::type;
+    word w = 0;
+    std::memcpy(&w, in + word_k.start, word_k.width);
+    constexpr auto mask = static_cast<word>(word_k.mask), value = static_cast<word>(word_k.value);
+    if constexpr (mask == static_cast<word>(~word{0})) return w == value;
+    else return static_cast<word>(w & mask) == value;
+}
 template <std::size_t Known, class M, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE bool fixed_words_match(const std::uint8_t* in, std::index_sequence<K...>) noexcept {
-    constexpr auto& words = fixed_words_v<Known, M>;
-    (void)in;                           // no fixed byte left to compare
-    if constexpr (sizeof...(K) == 1) {  // one compare (with a memory operand where the word is whole)
-        using word = typename uint_of_size<words.width>::type;  // the word's own width: a compare with memory folds
-        word w = 0;
-        std::memcpy(&w, in + words.w[0].start, words.width);
-        constexpr auto mask = static_cast<word>(words.w[0].mask), value = static_cast<word>(words.w[0].value);
-        if constexpr (mask == static_cast<word>(~word{0})) return w == value;
-        else return static_cast<word>(w & mask) == value;
-    }
-    std::uint64_t diff = 0;
-    (
-        (void)[&] {
-            std::uint64_t w = 0;
-            std::memcpy(&w, in + words.w[K].start, words.width);
-            diff |= (w ^ words.w[K].value) & words.w[K].mask;
-        }(),
-        ...);
-    return diff == 0;
+    (void)in;  // no fixed byte left to compare
+    return (fixed_word_match<Known, M, K>(in) && ...);
 }
 // The fixed bytes of M but the one at offset Known, all compared (no branch
 // between them); `in` holds them all.
@@ -385,7 +397,7 @@ constexpr error decode_raw(M& out, const std::uint8_t* data, std::size_t size) n
 
 namespace codec::inline ROBOWIRE_MODE_NAMESPACE {
 // Every fixed byte of M is right in `in` (which holds at least
-// table_v<M>.min_size() bytes), in one test: the bytes as masked words where
+// table_v<M>.min_size() bytes): the bytes as words, one compare each, where
 // the target loads unaligned little-endian words (ROBOWIRE_COPY_RUNS).
 template <described M>
 ROBOWIRE_ALWAYS_INLINE constexpr bool fixed_bytes_match(std::span<const std::uint8_t> in) noexcept {

@@ -217,6 +217,7 @@ inline constexpr bool same_bytes_v = [] {
 }();
 struct run {
     std::size_t wire = 0, mem = 0, size = 0;  // byte offsets in the input and in the object; 0: no run
+    std::size_t below = 0;                    // the end (object offset) of every field written before this run
 };
 // Copies a run of n bytes (a constant once inlined). Where words cannot be
 // loaded unaligned (Cortex-M0+, RV32), a short run byte by byte: a few loads and
