@@ -97,10 +97,13 @@ static_assert(offsetof(bw::status, flags) == 0 && offsetof(bw::status, temperatu
 }
 inline hw::error careful_decode_status(const std::uint8_t* p, std::size_t n, bw::status& s) {
     if (n - 54 > 129 - 54 || (n > 54 && n < 68) || p[0] != 0x01) [[unlikely]]
-        return careful_status_error(p, n);
+        return hw::never_good(careful_status_error(p, n));
     auto* o = reinterpret_cast<unsigned char*>(&s);
-    std::memcpy(o, p + 1, 9);     // flags .. temperature_c
-    std::memcpy(o + 10, p + 10, 12);  // accel_raw, bootloader_response, charge_current_ma
+    // Three copies of 16, 16 and 32 bytes, each of whole vector registers:
+    // the first two also write the padding after temperature_c and
+    // charge_current_ma and the start of pu_motors, which the next one overwrites.
+    std::memcpy(o, p + 1, 16);        // flags .. temperature_c (o[0..8]); o[9..15] overwritten below or padding
+    std::memcpy(o + 10, p + 10, 16);  // accel_raw, bootloader_response, charge_current_ma (o[10..21])
     std::memcpy(o + 24, p + 22, 32);  // pu_motors
     if (n >= 68) {
         std::memcpy(static_cast<void*>(&s.pid_state.emplace()), p + 54, 14);

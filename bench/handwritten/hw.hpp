@@ -22,6 +22,12 @@ enum errc : std::uint8_t {
 using error = std::uint16_t;
 inline constexpr error good = 0;
 inline error fail(errc code, std::size_t at) { return static_cast<error>(code | at << 8); }
+// The result of a cold error function called on input that failed a check:
+// never good, so the caller keeps no path that tests it again.
+inline error never_good(error e) {
+    if (e == good) __builtin_unreachable();
+    return e;
+}
 // Length check in robowire's order: too short (at the length), then too long (at the maximum).
 inline error length(std::size_t n, std::size_t want) {
     if (n < want) return fail(too_short, n);

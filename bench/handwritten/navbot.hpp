@@ -70,8 +70,8 @@ hw::error hw_decode(const std::uint8_t* p, std::size_t n, nb::maneuver& m) {
     return hw::good;
 }
 
-// The careful decoder: the length and the fixed bytes as one test (a word
-// compare), the ranges as one yes/no, the exact error in a cold function
+// The careful decoder: the length and the fixed bytes (a word compare), the
+// ranges as branches, the exact error in a cold function
 // (robowire's order), then the fields copied at once into robowire's own
 // struct, whose members are the wire's bytes 5..14 (layout checked below).
 static_assert(std::endian::native == std::endian::little && sizeof(nb::maneuver) == 10 &&
@@ -90,11 +90,12 @@ inline hw::error careful_decode(const std::uint8_t* p, std::size_t n, nb::maneuv
         std::memcpy(&h, p, 4);
         return h;
     };
-    if (n != 20 || head() != 0x0010AA55u) [[unlikely]] return careful_maneuver_error(p, n);  // head() only when n == 20
-    const unsigned bad = out8(p[5], -100, 100) | above(p[6], 100) | out8(p[7], -100, 100) | out8(p[8], -100, 100) |
-                         above(p[9], 2) | above(p[10], 1) | above(p[11], 1) | above(p[12], 2) | out8(p[13], -5, 5) |
-                         out8(p[14], -5, 5);
-    if (bad) [[unlikely]] return careful_maneuver_error(p, n);
+    if (n != 20 || head() != 0x0010AA55u) [[unlikely]] return hw::never_good(careful_maneuver_error(p, n));  // head() only when n == 20
+    // each range its own branch: fewer instructions than the checks OR-ed into one yes/no (g++ 12)
+    if (out8(p[5], -100, 100) || above(p[6], 100) || out8(p[7], -100, 100) || out8(p[8], -100, 100) ||
+        above(p[9], 2) || above(p[10], 1) || above(p[11], 1) || above(p[12], 2) || out8(p[13], -5, 5) ||
+        out8(p[14], -5, 5)) [[unlikely]]
+        return hw::never_good(careful_maneuver_error(p, n));
     std::memcpy(static_cast<void*>(&m), p + 5, 10);
     return hw::good;
 }
@@ -111,7 +112,7 @@ inline hw::error careful_encode(const nb::maneuver& m, std::uint8_t* out) {
                          outside(m.yaw, -100, 100) | (static_cast<unsigned>(m.switch_a) > 2) |
                          (static_cast<unsigned>(m.switch_b) > 1) | (static_cast<unsigned>(m.switch_c) > 1) |
                          (static_cast<unsigned>(m.switch_d) > 2) | outside(m.ball_x, -5, 5) | outside(m.ball_y, -5, 5);
-    if (bad) [[unlikely]] return careful_encode_error(m, out);
+    if (bad) [[unlikely]] return hw::never_good(careful_encode_error(m, out));
     const std::uint64_t head = 0x0010AA55u;  // 55 AA 10 00 00, then the fields
     std::memcpy(out, &head, 5);
     std::memcpy(out + 5, &m, 10);

@@ -65,8 +65,9 @@ inline std::uint16_t ld16(const std::uint8_t* p) { std::uint16_t v; std::memcpy(
     return hw_voltage(p, n, unused);
 }
 inline hw::error careful_voltage(const std::uint8_t* p, std::size_t n, std::int16_t& cv) {
-    if (n != 10 || ((ld32(p) ^ 0x1202AAFFu) | (ld16(p + 8) ^ 0x7755u)) != 0) [[unlikely]]
-        return careful_voltage_error(p, n);
+    // each word compared with memory (an immediate operand on x86-64)
+    if (n != 10 || ld32(p) != 0x1202AAFFu || ld16(p + 8) != 0x7755u) [[unlikely]]
+        return hw::never_good(careful_voltage_error(p, n));
     std::memcpy(&cv, p + 4, 2);
     return hw::good;
 }
@@ -76,16 +77,16 @@ inline hw::error careful_voltage(const std::uint8_t* p, std::size_t n, std::int1
 }
 [[gnu::cold, gnu::noinline]] hw::error careful_enum_error() { return hw::fail(hw::invalid_enum, 4); }
 inline hw::error careful_decode_any(const std::uint8_t* p, std::size_t n, hw_msg& m) {
-    if (n != 10 || ((ld16(p) ^ 0xAAFFu) | (ld16(p + 8) ^ 0x7755u)) != 0) [[unlikely]]
-        return careful_any_error(p, n);
+    if (n != 10 || ld16(p) != 0xAAFFu || ld16(p + 8) != 0x7755u) [[unlikely]]  // compared with memory
+        return hw::never_good(careful_any_error(p, n));
     std::memcpy(&m.dev, p + 2, 6);  // dev, cmd, p[4]
     switch (ld16(p + 2)) {  // DEV | CMD << 8
     case 0x0100: case 0x0102: case 0x0202: case 0x0302: case 0x0402: return hw::good;
-    case 0x1100: m.b = p[4]; return p[4] <= 3 ? hw::good : careful_enum_error();
+    case 0x1100: m.b = p[4]; return p[4] <= 3 ? hw::good : hw::never_good(careful_enum_error());
     case 0x0201: m.b = p[4]; m.a = ld16(p + 5); return hw::good;
     case 0x1102: case 0x1202: case 0x1302: m.a = ld16(p + 4); return hw::good;
-    case 0x1402: m.b = p[4]; m.a = p[5]; return p[4] <= 4 ? hw::good : careful_enum_error();
-    default: return careful_any_error(p, n);
+    case 0x1402: m.b = p[4]; m.a = p[5]; return p[4] <= 4 ? hw::good : hw::never_good(careful_enum_error());
+    default: return hw::never_good(careful_any_error(p, n));
     }
 }
 static_assert(offsetof(hw_msg, cmd) == 1 && offsetof(hw_msg, p) == 2);
