@@ -256,14 +256,13 @@ struct fixed_word {
 inline constexpr std::size_t max_fixed_words = 16;  // messages with more fixed bytes compare them one by one
 struct fixed_words {
     fixed_word w[max_fixed_words]{};
-    std::size_t count = 0, width = 0;
+    std::size_t count = 0;
 };
-// Words of `width` bytes covering fixed[0..n) but the byte at offset `known`,
-// each within the first `min` bytes.
+// Words of up to `width` bytes covering fixed[0..n) but the byte at offset
+// `known`, each within the first `min` bytes and narrowed to the bytes it covers.
 constexpr fixed_words cover_fixed(const fixed_byte* fixed, std::size_t n, std::size_t known, std::size_t min,
                                   std::size_t width) noexcept {
     fixed_words r{};
-    r.width = width;
     for (std::size_t i = 0; i < n; ++i) {
         const std::size_t at = fixed[i].offset;
         if (at == known) continue;
@@ -325,8 +324,8 @@ ROBOWIRE_ALWAYS_INLINE bool fixed_words_match(const std::uint8_t* in, std::index
     (void)in;  // no fixed byte left to compare
     return (fixed_word_match<Known, M, K>(in) && ...);
 }
-// The fixed bytes of M but the one at offset Known, all compared (no branch
-// between them); `in` holds them all.
+// The fixed bytes of M but the one at offset Known, all compared: as words where the target loads them
+// (fixed_words_match), else byte by byte with no branch between them; `in` holds them all.
 template <std::size_t Known, class M, std::size_t... K>
 ROBOWIRE_ALWAYS_INLINE constexpr bool fixed_match(in_bytes in, std::index_sequence<K...>) noexcept {
     if constexpr (ROBOWIRE_COPY_RUNS && std::endian::native == std::endian::little &&
