@@ -42,6 +42,27 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_fields(const M& m, error& err) noexc
         return detail::check_record<M>(m, 0, err, fields);
     } else {  // as one yes/no; which one failed, out of line: no error set up on the good path
         detail::no_error ignore;
+#if ROBOWIRE_SSE2
+        if constexpr (detail::field_count_v<M> >= detail::lanes_min_fields && sizeof(M) >= 8) {
+            if constexpr (detail::lanes_v<M, true>.use) {  // the one-byte fields' ranges as one vector test
+                if (!ROBOWIRE_CONSTANT_EVALUATED()) {
+                    constexpr const detail::lane_plan& p = detail::lanes_v<M, true>;
+                    const auto obj = reinterpret_cast<const unsigned char*>(&m);
+                    // members at object offset base + wire offset? (constants once inlined)
+                    const std::size_t base =
+                        detail::offset_in(obj, &(m.*(detail::field_v<M, p.anchor>.member))) - p.first;
+                    if (base + p.at[0] <= sizeof(M) - 8 && (p.loads != 2 || base + p.at[1] <= sizeof(M) - 8) &&
+                        detail::members_as_wire<M, p>(m, base, fields)) {
+                        if (detail::lanes_valid<p>(obj + base + p.at[0], obj + base + p.at[1]) &&
+                            detail::check_record_but<M, p.covered>(m, ignore, fields)) [[likely]]
+                            return true;
+                        err = detail::field_error(m);
+                        return false;
+                    }
+                }
+            }
+        }
+#endif
         if (detail::check_record<M>(m, 0, ignore, fields)) [[likely]]
             return true;
         err = detail::field_error(m);

@@ -18,6 +18,7 @@
 #include "../result.hpp"
 #include "../table.hpp"
 #include "access.hpp"
+#include "lanes.hpp"
 
 // Every step in the inline namespace of the size settings (config.hpp).
 namespace robowire::detail::inline ROBOWIRE_MODE_NAMESPACE {
@@ -146,6 +147,26 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off,
     }
 }
 
+// check_record, but the fields in Skip (bit I: field I) are left out: the
+// vector test checked them.
+template <class M, std::uint64_t Skip, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE constexpr bool check_record_but(const M& m, auto& err, std::index_sequence<I...>) noexcept {
+    return (((I < 64 && (Skip >> (I % 64) & 1) != 0) ||
+             check_field<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(m.*(field_v<M, I>.member),
+                                                                                          field_v<M, I>.offset, err)) &&
+            ...);
+}
+#if ROBOWIRE_SSE2
+// Do the members of the fields in P.covered lie as their wire bytes, `base`
+// bytes on (object offset = base + wire offset, modulo 2^N)?
+template <class M, const lane_plan& P, std::size_t... I>
+ROBOWIRE_ALWAYS_INLINE bool members_as_wire(const M& m, std::size_t base, std::index_sequence<I...>) noexcept {
+    const auto obj = reinterpret_cast<const unsigned char*>(&m);
+    return ((I >= 64 || (P.covered >> (I % 64) & 1) == 0 ||
+             offset_in(obj, &(m.*(field_v<M, I>.member))) == base + field_v<M, I>.offset) &&
+            ...);
+}
+#endif
 // M's fields in m checked, in table order: the first error, or errc::ok. Out
 // of line under ROBOWIRE_OPTIMIZE_SIZE: decode (copy_then_check_v) and encode
 // of a message share it.

@@ -1,0 +1,135 @@
+// The range checks of one-byte fields made as one vector test (x86-64; the
+// scalar checks elsewhere): every byte value of every such field, at run time,
+// against ranges written out here by hand; and the first error in table
+// order when a field the test covers and one it does not both fail.
+#include <robowire/core.hpp>
+
+#include <array>
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <span>
+#include <string>
+
+namespace demo_vec {
+enum class mode : std::uint8_t { slow = 1, normal = 2, fast = 3 };
+constexpr auto enum_table_of(std::type_identity<mode>) {
+    return std::array<robowire::enum_entry<mode>, 3>{{{mode::slow, "slow"}, {mode::normal, "normal"}, {mode::fast, "fast"}}};
+}
+// Members lie as the wire bytes, one byte on (the fixed byte 0 is not a member).
+struct gauges {
+    std::uint16_t id = 0;
+    std::int8_t a = 0;
+    std::uint8_t b = 5;
+    demo_vec::mode c = mode::slow;
+    std::array<std::int8_t, 4> d{};
+    std::uint8_t e = 0, f = 0;
+    std::int8_t g = 0;
+    std::uint16_t h = 0;
+    std::uint8_t k = 0;
+    friend constexpr bool operator==(const gauges&, const gauges&) = default;
+};
+constexpr auto table_of(std::type_identity<gauges>) {
+    using namespace robowire;
+    return make_table<gauges>("gauges", {{0, 0xA5, errc::bad_header}}, field{"id", &gauges::id, 1, wire::u16le{}},
+                              field{"a", &gauges::a, 3, wire::i8{}, range{-10, 10}},
+                              field{"b", &gauges::b, 4, wire::u8{}, range{5, 200}}, field{"c", &gauges::c, 5, wire::u8{}},
+                              field{"d", &gauges::d, 6, wire::i8{}, range{-127, 127}},
+                              field{"e", &gauges::e, 10, wire::u8{}, range{0, 63}}, field{"f", &gauges::f, 11, wire::u8{}},
+                              field{"g", &gauges::g, 12, wire::i8{}, range{-5, 5}},
+                              field{"h", &gauges::h, 13, wire::u16le{}, range{0, 1000}},
+                              field{"k", &gauges::k, 15, wire::u8{}, range{0, 9}});
+}
+}  // namespace demo_vec
+
+using namespace robowire;
+
+namespace {
+// A valid frame, by hand: id 0x1234, a -3, b 100, c fast, d {1, -1, 127, -127},
+// e 63, f 0xEE, g 5, h 1000, k 9.
+constexpr std::array<std::uint8_t, 16> good_frame{0xA5, 0x34, 0x12, 0xFD, 100, 3,    1,    0xFF,
+                                                  127,  0x81, 63,   0xEE, 5,   0xE8, 0x03, 9};
+const demo_vec::gauges good_value{0x1234, -3, 100, demo_vec::mode::fast, {1, -1, 127, -127}, 63, 0xEE, 5, 1000, 9};
+
+// Is byte v valid at wire offset `off` (one of the one-byte fields)?
+bool valid_byte(std::size_t off, std::uint8_t v) {
+    const auto s = static_cast<std::int8_t>(v);
+    switch (off) {
+    case 3: return s >= -10 && s <= 10;
+    case 4: return v >= 5 && v <= 200;
+    case 5: return v >= 1 && v <= 3;
+    case 6: case 7: case 8: case 9: return s != -128;
+    case 10: return v <= 63;
+    case 11: return true;
+    case 12: return s >= -5 && s <= 5;
+    case 15: return v <= 9;
+    default: return false;
+    }
+}
+errc code_at(std::size_t off) { return off == 5 ? errc::invalid_enum : errc::value_out_of_range; }
+}  // namespace
+
+TEST_CASE("vector checks: every byte value of every one-byte field, decode and encode", "[core][vector]") {
+    static_assert(sizeof(demo_vec::gauges) == 16);
+#if ROBOWIRE_SSE2 && !ROBOWIRE_OPTIMIZE_SIZE
+    // The layout above has the vector test (decode and encode), else this file tests nothing new.
+    static_assert(detail::lanes_v<demo_vec::gauges, false>.use && detail::lanes_v<demo_vec::gauges, true>.use);
+#endif
+    REQUIRE(decode<demo_vec::gauges>(good_frame).value() == good_value);
+    REQUIRE(encode(good_value).value() == bytes<16>::from(good_frame).value());
+    for (const std::size_t off : {3u, 4u, 5u, 6u, 7u, 8u, 9u, 10u, 11u, 12u, 15u}) {
+        for (unsigned v = 0; v < 256; ++v) {
+            INFO("offset " << off << " byte " << v);
+            auto in = good_frame;
+            in[off] = static_cast<std::uint8_t>(v);
+            const bool ok = valid_byte(off, static_cast<std::uint8_t>(v));
+            const auto r = decode<demo_vec::gauges>(in);
+            REQUIRE(r.has_value() == ok);
+            if (!ok) {
+                CHECK(r.error().code == code_at(off));
+                CHECK(r.error().offset == off);
+            }
+            // the same byte in the member (members lie as the wire bytes, one on)
+            auto m = good_value;
+            std::memcpy(reinterpret_cast<unsigned char*>(&m) + off - 1, &in[off], 1);
+            const auto e = encode(m);
+            REQUIRE(e.has_value() == ok);
+            if (ok) CHECK(*e == bytes<16>::from(in).value());
+            else CHECK(e.error() == error{code_at(off), static_cast<std::uint16_t>(off)});
+        }
+    }
+}
+
+TEST_CASE("vector checks: the first error in table order wins", "[core][vector]") {
+    // h (not in the vector test) fails before k (in it)
+    auto in = good_frame;
+    in[13] = 0xE9;  // h 1001
+    in[15] = 10;    // k 10
+    CHECK(decode<demo_vec::gauges>(in).error() == error{errc::value_out_of_range, 13});
+    // b (in it) fails before h
+    in[4] = 4;
+    CHECK(decode<demo_vec::gauges>(in).error() == error{errc::value_out_of_range, 4});
+    // k alone
+    in = good_frame;
+    in[15] = 200;
+    CHECK(decode<demo_vec::gauges>(in).error() == error{errc::value_out_of_range, 15});
+
+    auto m = good_value;
+    m.h = 1001;
+    m.k = 10;
+    CHECK(encode(m).error() == error{errc::value_out_of_range, 13});
+    m.a = 11;
+    CHECK(encode(m).error() == error{errc::value_out_of_range, 3});
+    // nothing written on an error
+    std::array<std::uint8_t, 16> out{};
+    out.fill(0x5A);
+    CHECK(!encode_to(m, out).has_value());
+    for (const auto b : out) CHECK(b == 0x5A);
+}
+
+// The same answers in a constant expression (the scalar checks).
+static_assert(decode<demo_vec::gauges>(good_frame).has_value());
+static_assert([] {
+    auto in = good_frame;
+    in[9] = 0x80;  // d[3] = -128
+    return decode<demo_vec::gauges>(in).error() == error{errc::value_out_of_range, 9};
+}());
