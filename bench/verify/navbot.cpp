@@ -25,13 +25,17 @@ static void check_enc(const nb::maneuver& m, const std::string& ctx) {
         if (r->size() != 20 || std::memcmp(r->data(), b.data(), 20) != 0) mismatch("maneuver encode", ctx);
     for (std::size_t i = e == hw::good ? 20 : 0; i < b.size(); ++i)
         if (b[i] != 0xA5) { mismatch("maneuver encode", ctx + " stray write"); break; }
-    std::array<std::uint8_t, 32> c;
-    c.fill(0xA5);
-    const auto ce = careful_encode(m, c.data());
-    if (same_err("maneuver encode careful", rw_err(r), ce, ctx) && ce == hw::good)
-        if (std::memcmp(r->data(), c.data(), 20) != 0) mismatch("maneuver encode careful", ctx);
-    for (std::size_t i = ce == hw::good ? 20 : 0; i < c.size(); ++i)
-        if (c[i] != 0xA5) { mismatch("maneuver encode careful", ctx + " stray write"); break; }
+    const auto careful = [&](const char* what, auto enc) {
+        std::array<std::uint8_t, 32> c;
+        c.fill(0xA5);
+        const auto ce = enc(m, c.data());
+        if (same_err(what, rw_err(r), ce, ctx) && ce == hw::good)
+            if (std::memcmp(r->data(), c.data(), 20) != 0) mismatch(what, ctx);
+        for (std::size_t i = ce == hw::good ? 20 : 0; i < c.size(); ++i)
+            if (c[i] != 0xA5) { mismatch(what, ctx + " stray write"); break; }
+    };
+    careful("maneuver encode careful", careful_encode);
+    careful("maneuver encode scalar", careful_encode_scalar);
 }
 static void set(nb::maneuver& m, std::size_t k, int v) {
     const auto s = static_cast<std::int8_t>(v);
