@@ -7,12 +7,17 @@
 
 #include <robowire/buwizz3.hpp>
 
+#include <array>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 
 #include "hw.hpp"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 // Internal linkage, as when these functions were part of the benchmark's own
 // translation unit (the same code, the same instruction counts).
@@ -38,7 +43,7 @@ inline std::int32_t rd32(const std::uint8_t* p) {
 }
 inline float rdf(const std::uint8_t* p) { float f; std::memcpy(&f, p, 4); return f; }
 inline void wrf(std::uint8_t* p, float f) { std::memcpy(p, &f, 4); }
-inline bool valid_function(std::uint8_t f) { return f == 0 || f == 0x10 || (f >= 0x14 && f <= 0x16); }
+constexpr bool valid_function(std::uint8_t f) { return f == 0 || f == 0x10 || (f >= 0x14 && f <= 0x16); }
 
 // robowire's order: the command byte (if there), the length (54..129), then a
 // truncated PID block (55..67 bytes).
@@ -167,41 +172,74 @@ hw::error hw_encode_pid(const bw::set_pid_parameters& m, std::uint8_t* out, std:
     return hw::good;
 }
 
-// The careful encoders: every check as one yes/no, the exact error in a cold
-// function (the hand-written encoders above, which check in robowire's
-// order), then the command byte and one copy of the struct's members, whose
-// layout is the wire's (checked below; little-endian host).
+// The careful encoders: the checks, the exact error in a cold function (the
+// hand-written encoders above, which check in robowire's order), then the
+// command byte and one copy of the struct's members, whose layout is the
+// wire's (checked below; little-endian host).
 static_assert(sizeof(bw::set_motor_data) == 8 && sizeof(bw::set_motor_data_extended) == 20 &&
-              offsetof(bw::set_pid_parameters, out_lp) == 4 && offsetof(bw::set_pid_parameters, mode) == 39);
+              offsetof(bw::set_motor_data_extended, power) == 16 &&
+              offsetof(bw::set_pid_parameters, out_lp) == 4 && offsetof(bw::set_pid_parameters, lim_out) == 36 &&
+              offsetof(bw::set_pid_parameters, mode) == 39);
 template <class M>
 [[gnu::cold, gnu::noinline]] hw::error careful_encode_error(hw::error (*enc)(const M&, std::uint8_t*, std::size_t),
                                                             const M& m, std::uint8_t* out, std::size_t size) {
     return enc(m, out, size);
 }
-inline unsigned power_bad(const std::int8_t* p, std::size_t n) {  // any power of -128
-    unsigned bad = 0;
-    for (std::size_t i = 0; i < n; ++i) bad |= p[i] == -128;
-    return bad;
-}
-inline hw::error careful_encode_motor(const bw::set_motor_data& m, std::uint8_t* out, std::size_t size) {
-    if (power_bad(m.power.data(), 6) | ((m.brake_flags | m.lut_disable_flags) > 0x3F) | (size < 9)) [[unlikely]]
-        return careful_encode_error(hw_encode_motor, m, out, size);
+// 0x30, word arithmetic on the 8 bytes: a power byte of 0x80 (bit 7 set, the
+// low seven clear: their sum with 0x7F leaves bit 7 clear), or a flag byte above 0x3F.
+inline hw::error careful_encode_motor_word(const bw::set_motor_data& m, std::uint8_t* out, std::size_t size) {
+    std::uint64_t q;
+    std::memcpy(&q, &m, 8);
+    constexpr std::uint64_t low7 = 0x7F7F7F7F7F7F7F7Full, power = 0x0000808080808080ull, flags = 0xC0C0000000000000ull;
+    if ((q & ((~((q & low7) + low7) & power) | flags)) != 0 || size < 9) [[unlikely]]
+        return hw::never_good(careful_encode_error(hw_encode_motor, m, out, size));
     out[0] = 0x30;
-    std::memcpy(out + 1, &m, 8);
+    std::memcpy(out + 1, &q, 8);
     return hw::good;
 }
+#if defined(__SSE2__)
+// 0x30, SSE2: each byte plus off[i], as a signed byte, above lim[i] is bad
+// (a power byte 0x80 becomes 0x7F; a flag byte above 0x3F lands above 0xBF).
+alignas(16) inline constexpr std::uint8_t motor_off[16] = {0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0x80, 0x80};
+alignas(16) inline constexpr std::uint8_t motor_lim[16] = {0x7E, 0x7E, 0x7E, 0x7E, 0x7E, 0x7E, 0xBF, 0xBF,
+                                                          0x7F, 0x7F, 0x7F, 0x7F, 0x7F, 0x7F, 0x7F, 0x7F};
+inline hw::error careful_encode_motor(const bw::set_motor_data& m, std::uint8_t* out, std::size_t size) {
+    const auto vec = [](const std::uint8_t(&a)[16]) { return _mm_load_si128(reinterpret_cast<const __m128i*>(a)); };
+    const __m128i v = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(&m));
+    if (_mm_movemask_epi8(_mm_cmpgt_epi8(_mm_add_epi8(v, vec(motor_off)), vec(motor_lim))) != 0 || size < 9)
+        [[unlikely]] return hw::never_good(careful_encode_error(hw_encode_motor, m, out, size));
+    out[0] = 0x30;
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(out + 1), v);
+    return hw::good;
+}
+#else
+inline hw::error careful_encode_motor(const bw::set_motor_data& m, std::uint8_t* out, std::size_t size) {
+    return careful_encode_motor_word(m, out, size);
+}
+#endif
+// 0x31: a branch per check, the two flag bytes as one 16-bit test.
 inline hw::error careful_encode_motor_ext(const bw::set_motor_data_extended& m, std::uint8_t* out, std::size_t size) {
-    if (power_bad(m.power.data(), 2) | ((m.brake_flags | m.lut_disable_flags) > 0x3F) | (size < 21)) [[unlikely]]
-        return careful_encode_error(hw_encode_motor_ext, m, out, size);
+    std::uint16_t f;  // brake_flags, lut_disable_flags
+    std::memcpy(&f, &m.brake_flags, 2);
+    if (m.power[0] == -128 || m.power[1] == -128 || (f & 0xC0C0) != 0 || size < 21) [[unlikely]]
+        return hw::never_good(careful_encode_error(hw_encode_motor_ext, m, out, size));
     out[0] = 0x31;
     std::memcpy(out + 1, &m, 20);
     return hw::good;
 }
+// 0x53: a branch per check, the two deadbands' signs as one 16-bit test, the
+// mode looked up in a table of the 256 values (valid: 0x00, 0x10, 0x14, 0x15, 0x16).
+inline constexpr auto valid_mode = [] {
+    std::array<bool, 256> t{};
+    for (std::size_t i = 0; i < 256; ++i) t[i] = valid_function(static_cast<std::uint8_t>(i));
+    return t;
+}();
 inline hw::error careful_encode_pid(const bw::set_pid_parameters& m, std::uint8_t* out, std::size_t size) {
-    const auto mode = static_cast<std::uint8_t>(m.mode);
-    if (static_cast<unsigned>(m.port > 3) | (m.lim_out < 1) | ((m.deadband_out | m.deadband_out_boost) < 0) | !valid_function(mode) |
-        (size < 38)) [[unlikely]]
-        return careful_encode_error(hw_encode_pid, m, out, size);
+    std::uint16_t db;  // deadband_out, deadband_out_boost
+    std::memcpy(&db, &m.deadband_out, 2);
+    if (m.port > 3 || m.lim_out < 1 || (db & 0x8080) != 0 || !valid_mode[static_cast<std::uint8_t>(m.mode)] ||
+        size < 38) [[unlikely]]
+        return hw::never_good(careful_encode_error(hw_encode_pid, m, out, size));
     out[0] = 0x53;
     out[1] = m.port;
     std::memcpy(out + 2, reinterpret_cast<const unsigned char*>(&m) + 4, 36);

@@ -79,9 +79,11 @@ int main() {
     for (const auto& base : motor_inputs()) {
         check_encode("encode 0x30", base, hw_encode_motor, "bench");
         check_encode("encode 0x30 careful", base, careful_encode_motor, "bench");
+        check_encode("encode 0x30 word", base, careful_encode_motor_word, "bench");
         sweep_fields(base, 8, power_flags(6), bad30, [](const bw::set_motor_data& m, const std::string& ctx) {
             check_encode("encode 0x30", m, hw_encode_motor, ctx);
         check_encode("encode 0x30 careful", m, careful_encode_motor, ctx);
+        check_encode("encode 0x30 word", m, careful_encode_motor_word, ctx);
         });
     }
     // ---- 0x31
