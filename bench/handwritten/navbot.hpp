@@ -24,6 +24,9 @@ namespace {
 namespace nb = robowire::navbot;
 namespace hw = bench::hw;
 
+#if defined(__SSE2__)
+inline __m128i vec(const std::uint8_t (&a)[16]) { return _mm_load_si128(reinterpret_cast<const __m128i*>(a)); }
+#endif
 bool in(int v, int lo, int hi) { return v >= lo && v <= hi; }
 hw::error hw_encode(const nb::maneuver& m, std::uint8_t* out) {
     if (!in(m.roll, -100, 100)) return hw::fail(hw::value_out_of_range, 5);
@@ -74,10 +77,10 @@ hw::error hw_decode(const std::uint8_t* p, std::size_t n, nb::maneuver& m) {
     return hw::good;
 }
 
-// The careful decoder: the length and the fixed bytes (a word compare), the
-// ranges as branches, the exact error in a cold function
-// (robowire's order), then the fields copied at once into robowire's own
-// struct, whose members are the wire's bytes 5..14 (layout checked below).
+// The careful decoder: the length, the fixed bytes and the ranges, the exact
+// error in a cold function (robowire's order), then the fields copied at
+// once into robowire's own struct, whose members are the wire's bytes 5..14
+// (layout checked below).
 static_assert(std::endian::native == std::endian::little && sizeof(nb::maneuver) == 10 &&
               offsetof(nb::maneuver, switch_a) == 4 && offsetof(nb::maneuver, ball_y) == 9);
 [[gnu::cold, gnu::noinline]] hw::error careful_maneuver_error(const std::uint8_t* p, std::size_t n) {
@@ -88,14 +91,15 @@ inline unsigned out8(std::uint8_t b, int lo, int hi) {  // 1: the signed byte b 
     return static_cast<unsigned>(static_cast<std::int8_t>(b) - lo) > static_cast<unsigned>(hi - lo);
 }
 inline unsigned above(std::uint8_t b, unsigned hi) { return b > hi; }  // 1: b > hi
-inline hw::error careful_decode(const std::uint8_t* p, std::size_t n, nb::maneuver& m) {
+// Scalar: the fixed bytes as a word compare, each range its own branch
+// (fewer instructions than the checks OR-ed into one yes/no, g++ 12).
+inline hw::error careful_decode_scalar(const std::uint8_t* p, std::size_t n, nb::maneuver& m) {
     const auto head = [p] {
         std::uint32_t h;
         std::memcpy(&h, p, 4);
         return h;
     };
     if (n != 20 || head() != 0x0010AA55u) [[unlikely]] return hw::never_good(careful_maneuver_error(p, n));  // head() only when n == 20
-    // each range its own branch: fewer instructions than the checks OR-ed into one yes/no (g++ 12)
     if (out8(p[5], -100, 100) || above(p[6], 100) || out8(p[7], -100, 100) || out8(p[8], -100, 100) ||
         above(p[9], 2) || above(p[10], 1) || above(p[11], 1) || above(p[12], 2) || out8(p[13], -5, 5) ||
         out8(p[14], -5, 5)) [[unlikely]]
@@ -103,6 +107,27 @@ inline hw::error careful_decode(const std::uint8_t* p, std::size_t n, nb::maneuv
     std::memcpy(static_cast<void*>(&m), p + 5, 10);
     return hw::good;
 }
+#if defined(__SSE2__)
+// SSE2, as the encoder below: bytes 0..15 plus off[i], as signed bytes,
+// above lim[i] are bad. The header bytes must land on 0x80 (the minimum);
+// bytes 4 and 15 may hold anything.
+alignas(16) inline constexpr std::uint8_t dec_off[16] = {0x2B, 0xD6, 0x70, 0x80, 0x00, 0xE4, 0x80, 0xE4,
+                                                        0xE4, 0x80, 0x80, 0x80, 0x80, 0x85, 0x85, 0x00};
+alignas(16) inline constexpr std::uint8_t dec_lim[16] = {0x80, 0x80, 0x80, 0x80, 0x7F, 0x48, 0xE4, 0x48,
+                                                        0x48, 0x82, 0x81, 0x81, 0x82, 0x8A, 0x8A, 0x7F};
+inline hw::error careful_decode(const std::uint8_t* p, std::size_t n, nb::maneuver& m) {
+    if (n != 20) [[unlikely]] return hw::never_good(careful_maneuver_error(p, n));
+    const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
+    if (_mm_movemask_epi8(_mm_cmpgt_epi8(_mm_add_epi8(v, vec(dec_off)), vec(dec_lim))) != 0) [[unlikely]]
+        return hw::never_good(careful_maneuver_error(p, n));
+    std::memcpy(static_cast<void*>(&m), p + 5, 10);
+    return hw::good;
+}
+#else
+inline hw::error careful_decode(const std::uint8_t* p, std::size_t n, nb::maneuver& m) {
+    return careful_decode_scalar(p, n, m);
+}
+#endif
 
 // The careful encoder: the checks, the exact error in a cold function, then
 // the frame as whole-register stores (the struct's layout is the wire's bytes 5..14).
@@ -135,7 +160,6 @@ alignas(16) inline constexpr std::uint8_t enc_off[16] = {0xE4, 0x80, 0xE4, 0xE4,
 alignas(16) inline constexpr std::uint8_t enc_lim[16] = {0x48, 0xE4, 0x48, 0x48, 0x82, 0x81, 0x81,
                                                         0x82, 0x8A, 0x8A, 0x7F, 0x7F, 0x7F, 0x7F, 0x7F, 0x7F};
 alignas(16) inline constexpr std::uint8_t enc_head[16] = {0x55, 0xAA, 0x10};
-inline __m128i vec(const std::uint8_t (&a)[16]) { return _mm_load_si128(reinterpret_cast<const __m128i*>(a)); }
 inline hw::error careful_encode(const nb::maneuver& m, std::uint8_t* out) {
     std::uint16_t tail;  // ball_x, ball_y
     std::memcpy(&tail, &m.ball_x, 2);

@@ -10,11 +10,14 @@ static void check_dec(const std::uint8_t* p, std::size_t n, const std::string& c
     if (same_err("maneuver decode", rw_err(r), e, ctx + " n=" + std::to_string(n)) && e == hw::good && !(m == *r))
         mismatch("maneuver decode", ctx);
     const nb::maneuver sentinel{1, 2, 3, 4, nb::switch_a{1}, nb::switch_b{1}, nb::switch_c{1}, nb::switch_d{1}, 5, -5};
-    nb::maneuver c = sentinel;
-    const auto ce = careful_decode(p, n, c);
-    if (same_err("maneuver decode careful", rw_err(r), ce, ctx + " n=" + std::to_string(n)) &&
-        !(ce == hw::good ? c == *r : c == sentinel))
-        mismatch("maneuver decode careful", ctx);
+    const auto careful = [&](const char* what, auto dec) {
+        nb::maneuver c = sentinel;
+        const auto ce = dec(p, n, c);
+        if (same_err(what, rw_err(r), ce, ctx + " n=" + std::to_string(n)) && !(ce == hw::good ? c == *r : c == sentinel))
+            mismatch(what, ctx);
+    };
+    careful("maneuver decode careful", careful_decode);
+    careful("maneuver decode scalar", careful_decode_scalar);
 }
 static void check_enc(const nb::maneuver& m, const std::string& ctx) {
     auto r = robowire::encode(m);
