@@ -39,6 +39,41 @@ constexpr auto table_of(std::type_identity<gauges>) {
                               field{"h", &gauges::h, 13, wire::u16le{}, range{0, 1000}},
                               field{"k", &gauges::k, 15, wire::u8{}, range{0, 9}});
 }
+// Two flag bytes and a sign bit tested as one word; a sparse enum.
+enum class step : std::uint8_t { one = 1, four = 4, nine = 9 };
+constexpr auto enum_table_of(std::type_identity<step>) {
+    return std::array<robowire::enum_entry<step>, 3>{{{step::one, "one"}, {step::four, "four"}, {step::nine, "nine"}}};
+}
+struct pair {
+    std::uint16_t id = 0;
+    std::uint8_t a = 0, b = 0;
+    demo_vec::step e = step::one;
+    std::int8_t c = 0;
+    friend constexpr bool operator==(const pair&, const pair&) = default;
+};
+constexpr auto table_of(std::type_identity<pair>) {
+    using namespace robowire;
+    return make_table<pair>("pair", {{0, 0x5A, errc::bad_header}}, field{"id", &pair::id, 1, wire::u16le{}},
+                            field{"a", &pair::a, 3, wire::u8{}, range{0, 63}},
+                            field{"b", &pair::b, 4, wire::u8{}, range{0, 63}}, field{"e", &pair::e, 5, wire::u8{}},
+                            field{"c", &pair::c, 6, wire::i8{}, range{0, 127}});
+}
+// Four one-byte fields at the end of an 8-byte struct: an 8-byte load from
+// the first of them would pass the struct's end.
+struct tail8 {
+    std::uint32_t big = 0;
+    std::int8_t p0 = 0, p1 = 0;
+    std::uint8_t f0 = 0, f1 = 0;
+    friend constexpr bool operator==(const tail8&, const tail8&) = default;
+};
+constexpr auto table_of(std::type_identity<tail8>) {
+    using namespace robowire;
+    return make_table<tail8>("tail8", {{0, 0xC3, errc::bad_header}}, field{"big", &tail8::big, 1, wire::u32le{}},
+                             field{"p0", &tail8::p0, 5, wire::i8{}, range{-127, 127}},
+                             field{"p1", &tail8::p1, 6, wire::i8{}, range{-127, 127}},
+                             field{"f0", &tail8::f0, 7, wire::u8{}, range{0, 63}},
+                             field{"f1", &tail8::f1, 8, wire::u8{}, range{0, 63}});
+}
 }  // namespace demo_vec
 
 using namespace robowire;
@@ -133,3 +168,53 @@ static_assert([] {
     in[9] = 0x80;  // d[3] = -128
     return decode<demo_vec::gauges>(in).error() == error{errc::value_out_of_range, 9};
 }());
+
+namespace {
+// Every value of the byte at each offset in `offs` (a member one byte before
+// it), decoded and encoded, against valid(off, byte) and the error code at off.
+template <class M, std::size_t N, class Valid, class Code>
+void every_byte(const std::array<std::uint8_t, N>& good, const M& value, std::initializer_list<std::size_t> offs,
+                Valid valid, Code code) {
+    REQUIRE(decode<M>(good).value() == value);
+    REQUIRE(encode(value).value() == bytes<N>::from(good).value());
+    for (const std::size_t off : offs) {
+        for (unsigned v = 0; v < 256; ++v) {
+            INFO("offset " << off << " byte " << v);
+            auto in = good;
+            in[off] = static_cast<std::uint8_t>(v);
+            const bool ok = valid(off, static_cast<std::uint8_t>(v));
+            const auto r = decode<M>(in);
+            REQUIRE(r.has_value() == ok);
+            if (!ok) CHECK(r.error() == error{code(off), static_cast<std::uint16_t>(off)});
+            auto m = value;
+            std::memcpy(reinterpret_cast<unsigned char*>(&m) + off - 1, &in[off], 1);
+            const auto e = encode(m);
+            REQUIRE(e.has_value() == ok);
+            if (ok) CHECK(*e == bytes<N>::from(in).value());
+            else CHECK(e.error() == error{code(off), static_cast<std::uint16_t>(off)});
+        }
+    }
+}
+}  // namespace
+
+TEST_CASE("vector checks: flag bytes as one word, a sparse enum, a load that ends at the struct's end",
+          "[core][vector]") {
+    static_assert(sizeof(demo_vec::pair) == 6 && sizeof(demo_vec::tail8) == 8);
+#if ROBOWIRE_SSE2 && !ROBOWIRE_OPTIMIZE_SIZE
+    static_assert(detail::lanes_v<demo_vec::pair, false>.words == 1 && detail::lanes_v<demo_vec::pair, true>.words == 1);
+    static_assert(detail::lanes_v<demo_vec::tail8, true>.win[1].loads == 1);
+#endif
+    // id 0xBEEF, a 63, b 0, e nine, c 127
+    every_byte(std::array<std::uint8_t, 7>{0x5A, 0xEF, 0xBE, 63, 0, 9, 127},
+               demo_vec::pair{0xBEEF, 63, 0, demo_vec::step::nine, 127}, {3, 4, 5, 6},
+               [](std::size_t off, std::uint8_t v) {
+                   if (off == 5) return v == 1 || v == 4 || v == 9;
+                   return off == 6 ? v <= 127 : v <= 63;
+               },
+               [](std::size_t off) { return off == 5 ? errc::invalid_enum : errc::value_out_of_range; });
+    // big 0x01020304, p0 -127, p1 127, f0 0, f1 63
+    every_byte(std::array<std::uint8_t, 9>{0xC3, 4, 3, 2, 1, 0x81, 0x7F, 0, 63},
+               demo_vec::tail8{0x01020304, -127, 127, 0, 63}, {5, 6, 7, 8},
+               [](std::size_t off, std::uint8_t v) { return off <= 6 ? v != 0x80 : v <= 63; },
+               [](std::size_t) { return errc::value_out_of_range; });
+}

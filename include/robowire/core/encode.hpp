@@ -43,7 +43,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_fields(const M& m, error& err) noexc
     } else {  // as one yes/no; which one failed, out of line: no error set up on the good path
         detail::no_error ignore;
 #if ROBOWIRE_SSE2
-        if constexpr (detail::field_count_v<M> >= detail::lanes_min_fields && sizeof(M) >= 8) {
+        if constexpr (detail::field_count_v<M> >= detail::lanes_min_fields) {
             if constexpr (detail::lanes_v<M, true>.use) {  // the one-byte fields' ranges as one vector test
                 if (!ROBOWIRE_CONSTANT_EVALUATED()) {
                     constexpr const detail::lane_plan& p = detail::lanes_v<M, true>;
@@ -51,9 +51,9 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_fields(const M& m, error& err) noexc
                     // members at object offset base + wire offset? (constants once inlined)
                     const std::size_t base =
                         detail::offset_in(obj, &(m.*(detail::field_v<M, p.anchor>.member))) - p.first;
-                    if (base + p.at[0] <= sizeof(M) - 8 && (p.loads != 2 || base + p.at[1] <= sizeof(M) - 8) &&
-                        detail::members_as_wire<M, p>(m, base, fields)) {
-                        if (detail::lanes_valid<p>(obj + base + p.at[0], obj + base + p.at[1]) &&
+                    const std::size_t w = detail::plan_fits(p, base, sizeof(M));
+                    if (w < 2 && detail::members_as_wire<M, p>(m, base, fields)) {
+                        if ((w == 0 ? detail::plan_valid<p, 0>(obj, base) : detail::plan_valid<p, 1>(obj, base)) &&
                             detail::check_record_but<M, p.covered>(m, ignore, fields)) [[likely]]
                             return true;
                         err = detail::field_error(m);

@@ -88,7 +88,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_scalar(E& v, in_bytes in, std::size
         if constexpr (std::is_enum_v<E>) {
             const auto e = static_cast<E>(raw);
             if constexpr (checks_v<Err>) {
-                if (!is_valid_enum(e)) [[unlikely]] {
+                if (!valid_enum(e)) [[unlikely]] {
                     err = codec::fail_at(errc::invalid_enum, off);
                     return false;
                 }

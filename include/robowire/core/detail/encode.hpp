@@ -38,7 +38,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_scalar(const E& v, std::size_t off, 
     if constexpr (W::kind == wire_kind::f32le) {
         return true;
     } else if constexpr (std::is_enum_v<E>) {
-        if (!is_valid_enum(v)) [[unlikely]] {
+        if (!valid_enum(v)) [[unlikely]] {
             err = codec::fail_at(errc::invalid_enum, off);
             return false;
         }

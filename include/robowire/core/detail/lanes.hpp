@@ -80,16 +80,28 @@ constexpr byte_lanes lanes_of(const lane_shape& s, std::int64_t min, std::int64_
 // The vector test of M: fields (bit I of `covered`) whose checks it makes,
 // the bytes it loads (wire offsets of 8-byte halves, or one 16-byte load),
 // and its constants per lane.
+struct lane_window {
+    std::size_t at[2] = {0, 0};  // wire offsets of the loads
+    unsigned loads = 0;          // 0: none; 1: 8 bytes at at[0]; 2: 8 at at[0], 8 at at[1]; 16: 16 at at[0]
+    // lane k valid: (signed char)(byte + add[k]) <= lim[k], that is byte - lo in [0, width]
+    // (add = 0x80 - lo, lim = width - 0x80); a lane with no test: add 0, lim 127
+    alignas(16) std::uint8_t add[16] = {};
+    alignas(16) std::int8_t lim[16] = {127, 127, 127, 127, 127, 127, 127, 127, 127, 127, 127, 127, 127, 127, 127, 127};
+};
 struct lane_plan {
     bool use = false;
     std::uint64_t covered = 0;
-    std::size_t anchor = 0;      // a covered field, the first tested (encode finds its member)
-    std::size_t first = 0;       // its wire offset
-    std::size_t at[2] = {0, 0};  // wire offsets of the loads
-    unsigned loads = 0;          // 1: 8 bytes at at[0]; 2: 8 at at[0], 8 at at[1]; 16: 16 at at[0]
-    alignas(16) std::uint8_t lo[16] = {};
-    alignas(16) std::uint8_t width[16] = {255, 255, 255, 255, 255, 255, 255, 255,
-                                          255, 255, 255, 255, 255, 255, 255, 255};
+    std::size_t anchor = 0;  // a covered field, the first tested (encode finds its member)
+    std::size_t first = 0;   // its wire offset
+    // The vector test: win[0]; encode of 8 bytes or less also win[1], the load
+    // ending at the last byte tested (for the object whose end win[0] passes).
+    lane_window win[2];
+    // Words of 2 or 4 bytes at wire offset word_at[k] whose bits in word_mask[k] (little-endian)
+    // must be 0: fields valid in [0, 2^b - 1], two or more a word, that the vector does not test.
+    std::size_t words = 0;
+    std::size_t word_at[4] = {};
+    unsigned word_size[4] = {};
+    std::uint32_t word_mask[4] = {};
 };
 // The plan: the 16-byte window of wire offsets, from a checked field on,
 // whose fields' checks cost the most, if the test costs less. Limit: wire
@@ -114,32 +126,65 @@ constexpr lane_plan plan_lanes(const byte_lanes* f, const std::size_t* count, st
         const std::size_t span = last - f[s].off + 1;
         const unsigned loads = span > 8 ? (limit >= 16 ? 16 : 2) : 1;
         if (loads == 1 && limit != 0 && limit < 8) continue;
-        const unsigned test = loads == 2 ? 10 : 8;
+        const unsigned test = loads == 2 ? 8 : 6;  // the loads, add, compare, mask, test, branch
         if (cost > test && cost - test > best_gain) best = s, best_gain = cost - test, best_loads = loads;
     }
     lane_plan p{};
-    if (best == n) return p;
-    p.use = true;
-    p.anchor = best;
-    p.first = f[best].off;
-    p.loads = best_loads;
+    if (best != n) {
+        p.anchor = best;
+        p.first = f[best].off;
+    }
     std::size_t last = p.first;
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < n && best != n; ++i)
         if (in_window(i, p.first)) {
             p.covered |= std::uint64_t{1} << i;
             if (f[i].checked && f[i].off + count[i] - 1 > last) last = f[i].off + count[i] - 1;
         }
-    if (p.loads == 16) p.at[0] = p.first + 16 <= limit ? p.first : limit - 16;
-    else if (p.loads == 1) p.at[0] = limit == 0 || p.first + 8 <= limit ? p.first : limit - 8;
-    else p.at[0] = p.first, p.at[1] = last - 7;
-    for (std::size_t i = 0; i < n; ++i)
-        if ((p.covered >> i & 1) && f[i].checked)
-            for (std::size_t w = f[i].off; w < f[i].off + count[i]; ++w) {
-                // lane of wire byte w; a byte both halves hold is tested in the first
-                const std::size_t lane = p.loads == 2 && w >= p.at[0] + 8 ? 8 + (w - p.at[1]) : w - p.at[0];
-                p.lo[lane] = f[i].lo;
-                p.width[lane] = f[i].width;
+    // the mask words, from the fields left
+    const auto maskable = [&](std::size_t i) {
+        return i < 64 && (p.covered >> i & 1) == 0 && f[i].ok && f[i].checked && f[i].lo == 0 && f[i].width != 255 &&
+               ((f[i].width + 1) & f[i].width) == 0;
+    };
+    for (std::size_t s = 0; s < n && p.words < 4; ++s) {
+        if (!maskable(s)) continue;
+        const std::size_t a = f[s].off;
+        unsigned size = limit == 0 || a + 4 <= limit ? 4 : 2;
+        if (limit != 0 && a + size > limit) continue;
+        std::size_t bytes = 0, end = a;
+        for (std::size_t i = s; i < n; ++i)
+            if (maskable(i) && f[i].off + count[i] <= a + size) bytes += count[i], end = f[i].off + count[i];
+        if (bytes < 2) continue;
+        if (end <= a + 2) size = 2;
+        if (best == n && p.words == 0) p.anchor = s, p.first = a;
+        for (std::size_t i = s; i < n; ++i)
+            if (maskable(i) && f[i].off + count[i] <= a + size) {
+                p.covered |= std::uint64_t{1} << i;
+                for (std::size_t k = 0; k < count[i]; ++k)
+                    p.word_mask[p.words] |= std::uint32_t{static_cast<std::uint8_t>(~f[i].width)}
+                                            << 8 * (f[i].off + k - a);
             }
+        p.word_at[p.words] = a;
+        p.word_size[p.words++] = size;
+    }
+    p.use = best != n || p.words != 0;
+    if (!p.use) return lane_plan{};
+    const auto fill = [&](lane_window& w, unsigned loads, std::size_t at0, std::size_t at1) {
+        w.loads = loads;
+        w.at[0] = at0;
+        w.at[1] = at1;
+        for (std::size_t i = 0; i < n; ++i)
+            if ((p.covered >> i & 1) && f[i].checked && in_window(i, p.first))
+                for (std::size_t b = f[i].off; b < f[i].off + count[i]; ++b) {
+                    // lane of wire byte b; a byte both halves hold is tested in the first
+                    const std::size_t lane = loads == 2 && b >= at0 + 8 ? 8 + (b - at1) : b - at0;
+                    w.add[lane] = static_cast<std::uint8_t>(0x80 - f[i].lo);
+                    w.lim[lane] = static_cast<std::int8_t>(f[i].width - 0x80);
+                }
+    };
+    if (best_loads == 16) fill(p.win[0], 16, p.first + 16 <= limit ? p.first : limit - 16, 0);
+    else if (best_loads == 2) fill(p.win[0], 2, p.first, last - 7);
+    else if (best_loads == 1 && limit != 0) fill(p.win[0], 1, p.first + 8 <= limit ? p.first : limit - 8, 0);
+    else if (best_loads == 1) fill(p.win[0], 1, p.first, 0), fill(p.win[1], 1, last >= 7 ? last - 7 : 0, 0);
     return p;
 }
 template <class M, bool Member, std::size_t... I>
@@ -159,13 +204,34 @@ inline constexpr lane_plan lanes_v = plan_of<M, Member>(Member ? 0 : min_size_v<
 inline constexpr std::size_t lanes_min_fields = 3;
 
 #if ROBOWIRE_SSE2
+// The mask words' test: no bit of a word_mask set in the bytes at p + base + word_at.
+template <const lane_plan& P, std::size_t... K>
+ROBOWIRE_ALWAYS_INLINE bool words_valid(const unsigned char* p, std::size_t base, std::index_sequence<K...>) noexcept {
+    const auto word_ok = [p, base](std::size_t at, unsigned size, std::uint32_t mask) {
+        if (size == 2) {
+            std::uint16_t w;
+            std::memcpy(&w, p + (base + at), 2);
+            return (w & mask) == 0;
+        }
+        std::uint32_t w;
+        std::memcpy(&w, p + (base + at), 4);
+        return (w & mask) == 0;
+    };
+    (void)word_ok;
+    return (word_ok(P.word_at[K], P.word_size[K], P.word_mask[K]) && ...);
+}
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push  // g++ 12 warns of the load of a window that the caller's test (plan_fits) rules out
+#pragma GCC diagnostic ignored "-Warray-bounds"
+#endif
 // The test: every lane of the bytes at a (and b) valid. SSE2, through the
 // compilers' vector types (no intrinsics header).
-template <const lane_plan& P>
+template <const lane_plan& Plan, std::size_t W>
 ROBOWIRE_ALWAYS_INLINE bool lanes_valid(const unsigned char* a, const unsigned char* b) noexcept {
+    constexpr const lane_window& P = Plan.win[W];
     using v16 = unsigned char __attribute__((vector_size(16)));
     using u64x2 = unsigned long long __attribute__((vector_size(16)));
-    using c16 = char __attribute__((vector_size(16)));
+    using c16 = signed char __attribute__((vector_size(16)));
     v16 x;
     if constexpr (P.loads == 16) {
         std::memcpy(&x, a, 16);
@@ -175,14 +241,59 @@ ROBOWIRE_ALWAYS_INLINE bool lanes_valid(const unsigned char* a, const unsigned c
         if constexpr (P.loads == 2) std::memcpy(&hi, b, 8);
         x = reinterpret_cast<v16>(u64x2{lo, hi});
     }
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
     (void)b;
-    v16 lo, width;
-    std::memcpy(&lo, P.lo, 16);
-    std::memcpy(&width, P.width, 16);
-    const v16 d = x - lo;
-    const v16 clamped = d < width ? d : width;
-    return __builtin_ia32_pmovmskb128(reinterpret_cast<c16>(clamped == d)) == 0xFFFF;
+    v16 add;
+    c16 lim;
+    std::memcpy(&add, P.add, 16);
+    std::memcpy(&lim, P.lim, 16);
+    return __builtin_ia32_pmovmskb128(reinterpret_cast<c16>(x + add) > lim) == 0;
+}
+// Every test of P on the bytes at p + base + wire offset, its vector test
+// with window W (plan_fits).
+template <const lane_plan& P, std::size_t W = 0>
+ROBOWIRE_ALWAYS_INLINE bool plan_valid(const unsigned char* p, std::size_t base) noexcept {
+    constexpr const lane_window& w = P.win[W];
+    if constexpr (w.loads != 0)
+        if (!lanes_valid<P, W>(p + (base + w.at[0]), p + (base + w.at[1]))) return false;
+    return words_valid<P>(p, base, std::make_index_sequence<P.words>{});
+}
+// The window of P whose loads stay within an object of `size` bytes at
+// object offset base + wire offset (modulo 2^N): 0 or 1, else 2 (none).
+constexpr std::size_t plan_fits(const lane_plan& p, std::size_t base, std::size_t size) noexcept {
+    const auto fits = [&](std::size_t at, std::size_t n) { return size >= n && base + at <= size - n; };
+    bool words = true;
+    for (std::size_t k = 0; k < p.words; ++k) words = words && fits(p.word_at[k], p.word_size[k]);
+    for (std::size_t k = 0; k < 2 && words; ++k) {
+        const lane_window& w = p.win[k];
+        if (k == 1 && w.loads == 0) break;
+        if (w.loads == 0 || (fits(w.at[0], w.loads == 16 ? 16 : 8) && (w.loads != 2 || fits(w.at[1], 8)))) return k;
+    }
+    return 2;
 }
 #endif
+
+// Codes of a one-byte enum whose codes are not one run, 1 where valid: one
+// load in place of a range and a bit test (speed builds; 256 bytes).
+template <class E>
+inline constexpr auto enum_code_bytes_v = [] {
+    std::array<std::uint8_t, 256> t{};
+    for (const auto& entry : enum_table_v<E>)
+        t[static_cast<std::uint8_t>(static_cast<std::underlying_type_t<E>>(entry.value))] = 1;
+    return t;
+}();
+inline namespace ROBOWIRE_MODE_NAMESPACE {
+// is_valid_enum, with that table where it takes fewer instructions.
+template <class E>
+ROBOWIRE_ALWAYS_INLINE constexpr bool valid_enum(E e) noexcept {
+    if constexpr (!ROBOWIRE_OPTIMIZE_SIZE && sizeof(E) == 1 && !enum_code_run_v<E>.found) {
+        if (!ROBOWIRE_CONSTANT_EVALUATED())
+            return enum_code_bytes_v<E>[static_cast<std::uint8_t>(static_cast<std::underlying_type_t<E>>(e))] != 0;
+    }
+    return is_valid_enum(e);
+}
+}  // namespace ROBOWIRE_MODE_NAMESPACE
 
 }  // namespace robowire::detail
