@@ -79,19 +79,31 @@ static frame10 to_frame(const std::uint8_t* f) {
 }
 // `s` fed in chunks of `chunk` bytes (the last may be shorter) to robowire's
 // scanner, the careful scanner and the state machine, which also takes it
-// byte by byte.
+// byte by byte; the counters as on_frame sees them are compared too.
 static void check_scan(const std::uint8_t* s, std::size_t size, std::size_t chunk, const std::string& ctx) {
     osp::scanner rw;
     careful_scanner hand;
     state_machine sm;
     frame_list f_rw, f_hand, f_sm;
+    using counts = std::array<std::uint64_t, 3>;  // frames, skipped, false starts, in on_frame
+    std::vector<counts> c_rw, c_hand, c_sm;
     bool ok = true;
     for (std::size_t i = 0; i < size && ok; i += chunk) {
         const std::size_t n = std::min(chunk, size - i);
-        rw.feed(std::span(s + i, n), [&](osp::scanner::frame_bytes f) { f_rw.push_back(to_frame(f.data())); });
-        hand.feed(s + i, n, [&](const std::uint8_t* f) { f_hand.push_back(to_frame(f)); });
-        for (std::size_t k = i; k < i + n; ++k) sm.push(s[k], [&](const std::uint8_t* f) { f_sm.push_back(to_frame(f)); });
-        ok = f_rw == f_sm && f_hand == f_sm && rw.frames() == sm.frames && hand.sm.frames == sm.frames &&
+        rw.feed(std::span(s + i, n), [&](osp::scanner::frame_bytes f) {
+            f_rw.push_back(to_frame(f.data()));
+            c_rw.push_back({rw.frames(), rw.skipped(), rw.false_starts()});
+        });
+        hand.feed(s + i, n, [&](const std::uint8_t* f) {
+            f_hand.push_back(to_frame(f));
+            c_hand.push_back({hand.sm.frames, hand.sm.skipped, hand.sm.false_starts});
+        });
+        for (std::size_t k = i; k < i + n; ++k)
+            sm.push(s[k], [&](const std::uint8_t* f) {
+                f_sm.push_back(to_frame(f));
+                c_sm.push_back({sm.frames, sm.skipped, sm.false_starts});
+            });
+        ok = f_rw == f_sm && f_hand == f_sm && c_rw == c_sm && c_hand == c_sm && rw.frames() == sm.frames && hand.sm.frames == sm.frames &&
              rw.skipped() == sm.skipped && hand.sm.skipped == sm.skipped && rw.false_starts() == sm.false_starts &&
              hand.sm.false_starts == sm.false_starts && rw.pending() == sm.n && hand.sm.n == sm.n;
         if (!ok)
@@ -106,7 +118,8 @@ static void check_scan(const std::uint8_t* s, std::size_t size, std::size_t chun
     ++g_counts["osp scanner"];
     if (!ok) mismatch("osp scanner", ctx);
 }
-static const std::size_t chunks[] = {1, 2, 3, 7, 9, 10, 11, 16, 17, 18, 25, 63, 64, 65, 100, 4096, 1 << 16};
+static const std::size_t chunks[] = {1,  2,  3,  7,  9,  10, 11, 15, 16,  17,  18,   24,     25,
+                                     26, 33, 40, 63, 64, 65, 72, 73, 74, 100, 137, 4096, 1 << 16};
 int main() {
     // the bench streams, and their first bytes cut at every length up to 100
     for (kind k : {kind::clean, kind::noisy, kind::noise, kind::all_ff, kind::ff_aa, kind::near_miss}) {
