@@ -284,6 +284,12 @@ private:
         return mask(_mm_cmpeq_epi8(a, ff)) | mask(_mm_cmpeq_epi8(b, ff)) << 16 | mask(_mm_cmpeq_epi8(c, ff)) << 32 |
                mask(_mm_cmpeq_epi8(d, ff)) << 48;
     }
+    static bool any_start(const std::uint8_t* p, std::size_t i, std::size_t n) {  // in p[i, n): n - i in [16, 64]
+        const std::size_t e = n - 16;
+        const v16 m = _mm_max_epu8(_mm_max_epu8(ld(p + i), ld(p + std::min(i + 16, e))),
+                                   _mm_max_epu8(ld(p + std::min(i + 32, e)), ld(p + e)));
+        return _mm_movemask_epi8(_mm_cmpeq_epi8(m, _mm_set1_epi8(-1))) != 0;
+    }
     static std::uint64_t frames64(const std::uint8_t* p) {
         return frames16(p) | frames16(p + 16) << 16 | frames16(p + 32) << 32 | frames16(p + 48) << 48;
     }
@@ -317,7 +323,11 @@ private:
         if (s == 0) return base + W;
         std::size_t k = first(s);
         if (!frame_at(p + base + k)) {
-            std::uint64_t f = (W == 64 ? frames64(p + base) : frames16(p + base)) & s;
+            if ((s & (s - 1)) == 0) {  // a lone false start
+                ++sm.false_starts;
+                return base + W;
+            }
+            const std::uint64_t f = (W == 64 ? frames64(p + base) : frames16(p + base)) & s;
             if (f == 0) {
                 sm.false_starts += popcount(s);
                 return base + W;
@@ -333,6 +343,13 @@ private:
         std::size_t mark = i;  // bytes from mark up to the next frame or held candidate are skipped
         const std::size_t last = n - 9;  // a window starting here or later ends past the chunk
         while (i + 64 <= last) i = block<64>(p, i, starts64(p + i), last, mark, on_frame);
+        if (i + 32 <= last && i + 64 >= n && starts16(p + i) == 0) {  // none in the next 16: any left?
+            i += 16;
+            if (!any_start(p, i, n)) {
+                sm.skipped += n - mark;
+                return;
+            }
+        }
         while (i < last) {
             if (i + 16 <= last) {
                 i = block<16>(p, i, starts16(p + i), last, mark, on_frame);
