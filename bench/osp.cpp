@@ -342,6 +342,7 @@ private:
         std::size_t i = sm.n != 0 ? finish_held(p, on_frame) : 0;
         std::size_t mark = i;  // bytes from mark up to the next frame or held candidate are skipped
         const std::size_t last = n - 9;  // a window starting here or later ends past the chunk
+        if (i < last && frame_at(p + i)) i = frames_from(p, i, last, mark, on_frame);  // often after a held one
         while (i + 64 <= last) i = block<64>(p, i, starts64(p + i), last, mark, on_frame);
         if (i + 32 <= last && i + 64 >= n && starts16(p + i) == 0) {  // none in the next 16: any left?
             i += 16;
@@ -367,14 +368,23 @@ private:
         }
         // The last 9 positions (and those of a frame that ends in them): the
         // first candidate that can still become a frame is held.
+        const auto partial_ok = [&](std::size_t at) {
+            const std::size_t m = n - at;
+            return (m < 2 || p[at + 1] == 0xAA) && (m < 9 || p[at + 8] == 0x55);
+        };
+        if (i < n && p[i] == 0xFF && partial_ok(i)) {  // as after frames back to back
+            hold(p + i, n - i);
+            sm.skipped += i - mark;
+            return;
+        }
         if (i < n) {
             const std::size_t base = n - 16;  // n >= 16 here, or i = n
             std::uint64_t s = n >= 16 ? starts16(p + base) >> (i - base) : 0;
             if (n < 16) for (std::size_t k = i; k < n; ++k) s |= std::uint64_t{p[k] == 0xFF} << (k - i);
             for (; s != 0; s &= s - 1) {
-                const std::size_t at = i + first(s), m = n - at;
-                if ((m < 2 || p[at + 1] == 0xAA) && (m < 9 || p[at + 8] == 0x55)) {
-                    hold(p + at, m);
+                const std::size_t at = i + first(s);
+                if (partial_ok(at)) {
+                    hold(p + at, n - at);
                     sm.skipped += at - mark;
                     return;
                 }
