@@ -299,6 +299,11 @@ private:
         x = (x + (x >> 4)) & 0x0F0F0F0F0F0F0F0Fu;
         return (x * 0x0101010101010101u) >> 56;
     }
+    static constexpr auto bits9 = [] {  // bits set in each 9-bit value
+        std::array<std::uint8_t, 512> t{};
+        for (std::size_t v = 1; v < 512; ++v) t[v] = static_cast<std::uint8_t>(t[v & (v - 1)] + 1);
+        return t;
+    }();
     static std::size_t first(std::uint64_t m) { return static_cast<std::size_t>(__builtin_ctzll(m)); }
 
     // Positions [i, last) of a chunk of n bytes; from the start byte at p[i]
@@ -377,10 +382,26 @@ private:
             sm.skipped += i - mark;
             return;
         }
-        if (i < n) {
-            const std::size_t base = n - 16;  // n >= 16 here, or i = n
-            std::uint64_t s = n >= 16 ? starts16(p + base) >> (i - base) : 0;
-            if (n < 16) for (std::size_t k = i; k < n; ++k) s |= std::uint64_t{p[k] == 0xFF} << (k - i);
+        if (i < n && n >= 16) {  // from masks of the last 16 bytes: start bytes, and those followed by ST2
+            const std::size_t base = n - 16, from = i - base;  // from: 7 or more
+            const v16 v = ld(p + base);
+            const std::uint64_t s = mask(_mm_cmpeq_epi8(v, _mm_set1_epi8(-1))) >> from;  // 9 bits at most
+            if (s != 0) {
+                std::uint64_t ok = s & (mask(_mm_cmpeq_epi8(v, _mm_set1_epi8(static_cast<char>(0xAA)))) >> (from + 1) |
+                                        std::uint64_t{1} << (15 - from));
+                if (p[n - 1] != 0x55) ok &= ~(std::uint64_t{1} << 7 >> from);  // at last, EN1 is there too
+                if (ok != 0) {
+                    const std::size_t k = first(ok);
+                    sm.false_starts += bits9[s & ((std::uint64_t{1} << k) - 1)];
+                    hold(p + i + k, n - i - k);
+                    sm.skipped += i + k - mark;
+                    return;
+                }
+                sm.false_starts += bits9[s];
+            }
+        } else if (i < n) {
+            std::uint64_t s = 0;
+            for (std::size_t k = i; k < n; ++k) s |= std::uint64_t{p[k] == 0xFF} << (k - i);
             for (; s != 0; s &= s - 1) {
                 const std::size_t at = i + first(s);
                 if (partial_ok(at)) {
