@@ -248,8 +248,8 @@ struct state_machine {
 // bytes and more: a held candidate is decided at once with the chunk's first
 // 9 bytes; SSE2 masks of the start bytes (and, where a start byte is no
 // frame, of whole frames) cover 64 or 16 positions a step; frames back to
-// back are checked one by one (two 16-bit compares); the last 9 positions
-// are looked at from one mask, and a candidate there is copied whole. The
+// back are checked one by one (two 16-bit compares); the candidate to hold
+// in the last 9 positions is found from masks and copied whole. The
 // counters are up to date in on_frame. Short chunks: the state machine.
 struct careful_scanner {
     state_machine sm;

@@ -1,7 +1,8 @@
 // robowire and the hand-written baselines of bench/osp.cpp, run on the same inputs:
 // the same outcome, error code and offset, and output (bench/verify/run). The
 // scanners: the same frames, byte-exact and in order, and the same counters
-// after every chunk, on the bench streams and on random ones, in many chunkings.
+// in each on_frame and after every chunk, on the bench streams and on random
+// ones, in many chunkings.
 #include "../osp.cpp"
 #include "check.hpp"
 
@@ -103,9 +104,10 @@ static void check_scan(const std::uint8_t* s, std::size_t size, std::size_t chun
                 f_sm.push_back(to_frame(f));
                 c_sm.push_back({sm.frames, sm.skipped, sm.false_starts});
             });
-        ok = f_rw == f_sm && f_hand == f_sm && c_rw == c_sm && c_hand == c_sm && rw.frames() == sm.frames && hand.sm.frames == sm.frames &&
-             rw.skipped() == sm.skipped && hand.sm.skipped == sm.skipped && rw.false_starts() == sm.false_starts &&
-             hand.sm.false_starts == sm.false_starts && rw.pending() == sm.n && hand.sm.n == sm.n;
+        ok = f_rw == f_sm && f_hand == f_sm && c_rw == c_sm && c_hand == c_sm && rw.frames() == sm.frames &&
+             hand.sm.frames == sm.frames && rw.skipped() == sm.skipped && hand.sm.skipped == sm.skipped &&
+             rw.false_starts() == sm.false_starts && hand.sm.false_starts == sm.false_starts && rw.pending() == sm.n &&
+             hand.sm.n == sm.n;
         if (!ok)
             std::printf("MISMATCH osp scanner %s chunk=%zu after %zu bytes: frames %zu/%zu/%zu skipped %llu/%llu/%llu "
                         "false starts %llu/%llu/%llu pending %zu/%zu/%zu (robowire/careful/bytewise)\n",
