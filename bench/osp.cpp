@@ -386,7 +386,13 @@ private:
             const std::size_t base = n - 16, from = i - base;  // from: 7 or more
             const v16 v = ld(p + base);
             const std::uint64_t s = mask(_mm_cmpeq_epi8(v, _mm_set1_epi8(-1))) >> from;  // 9 bits at most
-            if (s != 0) {
+            if (s != 0 && partial_ok(i + first(s))) {  // the first start byte there
+                const std::size_t at = i + first(s);
+                hold(p + at, n - at);
+                sm.skipped += at - mark;
+                return;
+            }
+            if (s != 0) {  // more than one
                 std::uint64_t ok = s & (mask(_mm_cmpeq_epi8(v, _mm_set1_epi8(static_cast<char>(0xAA)))) >> (from + 1) |
                                         std::uint64_t{1} << (15 - from));
                 if (p[n - 1] != 0x55) ok &= ~(std::uint64_t{1} << 7 >> from);  // at last, EN1 is there too
