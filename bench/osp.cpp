@@ -14,6 +14,7 @@
 #include <bit>
 #include <cstddef>
 #include <span>
+#include <type_traits>
 
 #include "common.hpp"
 #include "handwritten/osp.hpp"
@@ -260,7 +261,12 @@ struct careful_scanner {
             for (std::size_t k = 0; k < n; ++k) sm.push(p[k], on_frame);
             return;
         }
-        chunk(p, n, on_frame);
+        if constexpr (!std::is_lvalue_reference_v<F> && std::is_trivially_copyable_v<F>) {
+            F local = on_frame;  // a temporary's copy: the caller's loop keeps none in memory for the byte path
+            chunk(p, n, local);
+        } else {
+            chunk(p, n, on_frame);
+        }
     }
 
 private:
