@@ -1,6 +1,7 @@
 #include <robowire/core/bytes.hpp>
 
 #include <array>
+#include <string>
 #include <catch2/catch.hpp>
 #include <string_view>
 
@@ -97,6 +98,27 @@ TEST_CASE("hex formatting into a caller's buffer", "[core][bytes]") {
         const std::array<char, 5> want{digits[v >> 4], digits[v & 15], '-', digits[(255 - v) >> 4],
                                        digits[(255 - v) & 15]};
         CHECK(hex_is(two, std::string_view(want.data(), want.size()), '-'));
+    }
+    // With the space: eight bytes a step, then the rest; every length up to 20 and
+    // every byte value, nothing written past the text.
+    for (std::size_t n = 0; n <= 20; ++n) {
+        for (unsigned start = 0; start < 256; start += 7) {
+            std::array<std::uint8_t, 20> in{};
+            std::string want;
+            for (std::size_t i = 0; i < n; ++i) {
+                in[i] = static_cast<std::uint8_t>(start + 13 * i);
+                if (i != 0) want += ' ';
+                want += digits[in[i] >> 4];
+                want += digits[in[i] & 15];
+            }
+            std::array<char, 64> buf{};
+            buf.fill('#');
+            const auto w = to_hex(std::span(in).first(n), std::span(buf).first(want.size()));
+            INFO("n " << n << " start " << start);
+            REQUIRE(w.has_value());
+            CHECK(std::string_view(buf.data(), *w) == want);
+            CHECK(buf[want.size()] == '#');
+        }
     }
     std::array<char, 7> small{};
     const auto r = to_hex(abc, small);

@@ -5,6 +5,7 @@
 #include "config.hpp"  // first: the C++ version check
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -213,6 +214,32 @@ inline constexpr char hex_pairs[] =
     "E0E1E2E3E4E5E6E7E8E9EAEBECEDEEEF"
     "F0F1F2F3F4F5F6F7F8F9FAFBFCFDFEFF";
 static_assert(sizeof hex_pairs == 513);
+// The two digits of b and a space, as a word that holds them in memory order
+// (to_hex with the space: one 4-byte store per byte, the next overwrites the
+// fourth). A template: evaluated only where to_hex runs.
+template <class = void>
+inline constexpr auto hex_words_v = [] {
+    std::array<std::uint32_t, 256> t{};
+    for (std::size_t b = 0; b < 256; ++b) {
+        const std::uint32_t c0 = static_cast<std::uint8_t>(hex_pairs[2 * b]),
+                            c1 = static_cast<std::uint8_t>(hex_pairs[2 * b + 1]), sp = ' ';
+        t[b] = std::endian::native == std::endian::little ? c0 | c1 << 8 | sp << 16 : c0 << 24 | c1 << 16 | sp << 8;
+    }
+    return t;
+}();
+}  // namespace detail
+
+namespace detail {
+// to_hex's bytes before the last with another separator, or none: returns
+// where the last byte's digits go. Out of line: to_hex with the space stays small.
+ROBOWIRE_NOINLINE inline char* hex_other(const std::uint8_t* in, std::size_t n, char* o, char separator) noexcept {
+    for (std::size_t i = 0; i < n; ++i) {
+        std::memcpy(o, hex_pairs + 2 * std::size_t{in[i]}, 2);
+        o += 2;
+        if (separator) *o++ = separator;
+    }
+    return o;
+}
 }  // namespace detail
 
 // Characters to_hex writes for n bytes (with a separator: 3n - 1, else 2n).
@@ -223,23 +250,28 @@ static_assert(sizeof hex_pairs == 513);
 
 // Writes `in` as upper-case hex ("01 5C FF") into out; returns the number of
 // characters written (no terminator) or buffer_too_small.
-[[nodiscard]] constexpr result<std::size_t> to_hex(std::span<const std::uint8_t> in, std::span<char> out,
-                                                   char separator = ' ') noexcept {
+[[nodiscard]] ROBOWIRE_ALWAYS_INLINE constexpr result<std::size_t> to_hex(std::span<const std::uint8_t> in,
+                                                                          std::span<char> out,
+                                                                          char separator = ' ') noexcept {
     constexpr std::string_view digits = "0123456789ABCDEF";
     const std::size_t need = hex_size(in.size(), separator);
     if (need > out.size()) return fail(errc::buffer_too_small, need);
     char* o = out.data();
-    if constexpr (!ROBOWIRE_OPTIMIZE_SIZE) {  // a pair of digits per table entry, the separator test outside the loop
+    if constexpr (!ROBOWIRE_OPTIMIZE_SIZE) {  // digits from tables, the separator test outside the loop
         if (!ROBOWIRE_CONSTANT_EVALUATED() && !in.empty()) {
             const std::size_t last = in.size() - 1;
-            if (separator) {
-                for (std::size_t i = 0; i < last; ++i, o += 3) {
-                    std::memcpy(o, detail::hex_pairs + 2 * std::size_t{in[i]}, 2);
-                    o[2] = separator;
+            if (separator == ' ') {  // 8 bytes a step
+                const auto put = [&o](std::uint8_t b, std::size_t k) {
+                    std::memcpy(o + 3 * k, &detail::hex_words_v<>[b], 4);
+                };
+                const std::uint8_t* p = in.data();
+                for (std::size_t k = last / 8; k != 0; --k, p += 8, o += 24) {
+                    put(p[0], 0), put(p[1], 1), put(p[2], 2), put(p[3], 3);
+                    put(p[4], 4), put(p[5], 5), put(p[6], 6), put(p[7], 7);
                 }
+                for (std::size_t k = last % 8; k != 0; --k, ++p, o += 3) put(*p, 0);
             } else {
-                for (std::size_t i = 0; i < last; ++i, o += 2)
-                    std::memcpy(o, detail::hex_pairs + 2 * std::size_t{in[i]}, 2);
+                o = detail::hex_other(in.data(), last, o, separator);
             }
             std::memcpy(o, detail::hex_pairs + 2 * std::size_t{in[last]}, 2);
             return need;
