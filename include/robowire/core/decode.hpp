@@ -146,7 +146,9 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_input(in_bytes in, error& err) noexc
             if constexpr (lanes_v<M, false>.use) {  // the one-byte fields' ranges as one vector test (lanes.hpp)
                 if (!ROBOWIRE_CONSTANT_EVALUATED()) {
                     constexpr const lane_plan& p = lanes_v<M, false>;  // `in` holds min_size_v<M> bytes
-                    if (plan_valid<p>(in.data(), 0) && check_record_but<M, p.covered>(in, unread, fields)) [[likely]]
+                    if (plan_valid<p>(in.data(), 0) &&
+                        check_record<M>(in, 0, unread, kept_fields_t<lanes_v<M, false>.covered, field_count_v<M>>{}))
+                        [[likely]]
                         return true;
                     err = input_field_error<M>(in.data(), in.size());
                     return false;

@@ -53,8 +53,15 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_fields(const M& m, error& err) noexc
                         detail::offset_in(obj, &(m.*(detail::field_v<M, p.anchor>.member))) - p.first;
                     const std::size_t w = detail::plan_fits(p, base, sizeof(M));
                     if (w < 2 && detail::members_as_wire<M, p>(m, base, fields)) {
-                        if ((w == 0 ? detail::plan_valid<p, 0>(obj, base) : detail::plan_valid<p, 1>(obj, base)) &&
-                            detail::check_record_but<M, p.covered>(m, ignore, fields)) [[likely]]
+                        bool valid = false;
+                        if constexpr (p.win[1].loads != 0)
+                            valid = w == 0 ? detail::plan_valid<p, 0>(obj, base) : detail::plan_valid<p, 1>(obj, base);
+                        else valid = detail::plan_valid<p, 0>(obj, base);
+                        if (valid &&
+                            detail::check_record<M>(
+                                m, 0, ignore,
+                                detail::kept_fields_t<detail::lanes_v<M, true>.covered, detail::field_count_v<M>>{}))
+                            [[likely]]
                             return true;
                         err = detail::field_error(m);
                         return false;

@@ -413,15 +413,6 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(in_bytes in, std::size_t base
             ...);
 }
 
-// check_record, but the fields in Skip (bit I: field I) are left out: the
-// vector test checked them.
-template <class M, std::uint64_t Skip, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_record_but(in_bytes in, error& err, std::index_sequence<I...>) noexcept {
-    return (
-        ((I < 64 && (Skip >> (I % 64) & 1) != 0) ||
-         check_field<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(in, field_v<M, I>.offset, err)) &&
-        ...);
-}
 // No byte offset (check_fixed: no fixed byte is skipped).
 inline constexpr std::size_t no_offset = static_cast<std::size_t>(-1);
 // Is the fixed byte K of M (not the one at offset Skip) in `in` and wrong? Then e is its error.

@@ -147,15 +147,6 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off,
     }
 }
 
-// check_record, but the fields in Skip (bit I: field I) are left out: the
-// vector test checked them.
-template <class M, std::uint64_t Skip, std::size_t... I>
-ROBOWIRE_ALWAYS_INLINE constexpr bool check_record_but(const M& m, auto& err, std::index_sequence<I...>) noexcept {
-    return (((I < 64 && (Skip >> (I % 64) & 1) != 0) ||
-             check_field<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(m.*(field_v<M, I>.member),
-                                                                                          field_v<M, I>.offset, err)) &&
-            ...);
-}
 #if ROBOWIRE_SSE2
 // Do the members of the fields in P.covered lie as their wire bytes, `base`
 // bytes on (object offset = base + wire offset, modulo 2^N)?

@@ -61,6 +61,7 @@ constexpr lane_shape lane_shape_of() noexcept {
     }
 }
 // A field of that shape, valid in [min, max], at wire offset `off`, as lanes.
+template <class = void>  // compiled where used
 constexpr byte_lanes lanes_of(const lane_shape& s, std::int64_t min, std::int64_t max, std::size_t off,
                               std::size_t count) noexcept {
     if (!s.ok) return {};
@@ -107,6 +108,7 @@ struct lane_plan {
 // whose fields' checks cost the most, if the test costs less. Limit: wire
 // bytes readable (decode: the shortest input; encode: 0, the loads are placed
 // at run time). f, count: M's n fields (each covers count[i] bytes).
+template <class = void>  // compiled where used
 constexpr lane_plan plan_lanes(const byte_lanes* f, const std::size_t* count, std::size_t n,
                                std::size_t limit) noexcept {
     const auto in_window = [&](std::size_t i, std::size_t from) {
@@ -203,6 +205,25 @@ inline constexpr lane_plan lanes_v = plan_of<M, Member>(Member ? 0 : min_size_v<
                                                         std::make_index_sequence<field_count_v<M>>{});
 inline constexpr std::size_t lanes_min_fields = 3;
 
+// The indices below N that are not in Skip (bit k: index k), as an
+// index_sequence: the fields a plan's tests leave to check_record.
+template <std::uint64_t Skip, std::size_t N>
+struct kept_fields {
+    static constexpr auto list = [] {
+        std::array<std::size_t, N + 1> r{};  // r[N]: how many
+        for (std::size_t k = 0; k < N; ++k)
+            if (k >= 64 || (Skip >> k & 1) == 0) r[r[N]++] = k;
+        return r;
+    }();
+    template <std::size_t... K>
+    static constexpr auto seq(std::index_sequence<K...>) noexcept {
+        return std::index_sequence<list[K]...>{};
+    }
+    using type = decltype(seq(std::make_index_sequence<list[N]>{}));
+};
+template <std::uint64_t Skip, std::size_t N>
+using kept_fields_t = typename kept_fields<Skip, N>::type;
+
 #if ROBOWIRE_SSE2
 // The mask words' test: no bit of a word_mask set in the bytes at p + base + word_at.
 template <const lane_plan& P, std::size_t... K>
@@ -262,6 +283,7 @@ ROBOWIRE_ALWAYS_INLINE bool plan_valid(const unsigned char* p, std::size_t base)
 }
 // The window of P whose loads stay within an object of `size` bytes at
 // object offset base + wire offset (modulo 2^N): 0 or 1, else 2 (none).
+template <class = void>  // compiled where used
 constexpr std::size_t plan_fits(const lane_plan& p, std::size_t base, std::size_t size) noexcept {
     const auto fits = [&](std::size_t at, std::size_t n) { return size >= n && base + at <= size - n; };
     bool words = true;
