@@ -148,6 +148,28 @@ TEST_CASE("vector checks: the first error in table order wins", "[core][vector]"
     in[15] = 200;
     CHECK(decode<demo_vec::gauges>(in).error() == error{errc::value_out_of_range, 15});
 
+    // the fixed byte (in the same vector test) before every field; the length before both
+#if ROBOWIRE_SSE2 && !ROBOWIRE_OPTIMIZE_SIZE
+    static_assert(detail::lanes_v<demo_vec::gauges, false>.fixed_in);
+#endif
+    in = good_frame;
+    in[0] = 0xA4;
+    CHECK(decode<demo_vec::gauges>(in).error() == error{errc::bad_header, 0});
+    in[4] = 201;  // b
+    CHECK(decode<demo_vec::gauges>(in).error() == error{errc::bad_header, 0});
+    CHECK(decode<demo_vec::gauges>(std::span(in).first(15)).error() == error{errc::bad_header, 0});
+    in[0] = 0xA5;
+    CHECK(decode<demo_vec::gauges>(in).error() == error{errc::value_out_of_range, 4});
+    CHECK(decode<demo_vec::gauges>(std::span(in).first(15)).error() == error{errc::too_short, 15});
+    for (unsigned v = 0; v < 256; ++v) {  // every value of the fixed byte
+        auto f = good_frame;
+        f[0] = static_cast<std::uint8_t>(v);
+        demo_vec::gauges into{};
+        const error e = decode_into(into, f);
+        CHECK(e == (v == 0xA5 ? error{} : error{errc::bad_header, 0}));
+        CHECK(decode<demo_vec::gauges>(f).has_value() == (v == 0xA5));
+    }
+
     auto m = good_value;
     m.h = 1001;
     m.k = 10;

@@ -131,6 +131,26 @@ ROBOWIRE_COLD constexpr error input_field_error(const std::uint8_t* data, std::s
     (void)check_record<M>(in_bytes(data, size), 0, err, std::make_index_sequence<field_count_v<M>>{});
     return err;
 }
+// Whether check_input's vector test checks M's fixed bytes (none known), so
+// that input_ok checks the length only.
+template <std::size_t Known, class M>
+constexpr bool fixed_in_lanes() noexcept {
+#if ROBOWIRE_SSE2
+    if constexpr (Known == no_offset && !ROBOWIRE_OPTIMIZE_SIZE && field_count_v<M> >= lanes_min_fields)
+        return lanes_v<M, false>.use && lanes_v<M, false>.fixed_in;
+#endif
+    return false;
+}
+template <std::size_t Known, class M>
+inline constexpr bool fixed_in_lanes_v = fixed_in_lanes<Known, M>();
+// The first error of an input whose length is right: a fixed byte's, else a field's.
+template <class M>
+ROBOWIRE_COLD constexpr error fixed_or_field_error(const std::uint8_t* data, std::size_t size) noexcept {
+    const in_bytes in(data, size);
+    if (const error e = fixed_error<M, no_offset>(in, std::make_index_sequence<fixed_count_v<M>>{}); e.code != errc::ok)
+        return e;
+    return input_field_error<M>(data, size);
+}
 // The check pass: every field of `in` valid, else false with the first error
 // in err. Speed: the checks as one yes/no, which one failed found out of line
 // (no error code or offset set up on the good path).
@@ -150,7 +170,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_input(in_bytes in, error& err) noexc
                         check_record<M>(in, 0, unread, kept_fields_t<lanes_v<M, false>.covered, field_count_v<M>>{}))
                         [[likely]]
                         return true;
-                    err = input_field_error<M>(in.data(), in.size());
+                    err = p.fixed_in ? fixed_or_field_error<M>(in.data(), in.size())
+                                     : input_field_error<M>(in.data(), in.size());
                     return false;
                 }
             }
@@ -360,6 +381,14 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool fixed_match(in_bytes in, std::index_sequen
 template <std::size_t Known, class M, class R>
 ROBOWIRE_ALWAYS_INLINE constexpr bool input_ok(R& r, in_bytes in) noexcept {
     constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input();
+    if constexpr (fixed_in_lanes_v<Known, M>) {  // the fixed bytes in check_input's vector test (at run time)
+        if (!ROBOWIRE_CONSTANT_EVALUATED()) {
+            if (in.size() - min <= max - min) [[likely]]
+                return true;
+            r = input_error<Known, M>(in.data(), in.size());
+            return false;
+        }
+    }
     if constexpr (fixed_within_min_v<Known, M> && !ROBOWIRE_OPTIMIZE_SIZE) {  // size: no cold function per message
         if (in.size() - min <= max - min && fixed_match<Known, M>(in, std::make_index_sequence<fixed_count_v<M>>{}))
             [[likely]]

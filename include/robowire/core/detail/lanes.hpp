@@ -97,6 +97,7 @@ struct lane_plan {
     // The vector test: win[0]; encode of 8 bytes or less also win[1], the load
     // ending at the last byte tested (for the object whose end win[0] passes).
     lane_window win[2];
+    bool fixed_in = false;  // decode: win[0] tests every fixed byte too (byte == value)
     // Words of 2 or 4 bytes at wire offset word_at[k] whose bits in word_mask[k] (little-endian)
     // must be 0: fields valid in [0, 2^b - 1], two or more a word, that the vector does not test.
     std::size_t words = 0;
@@ -109,8 +110,8 @@ struct lane_plan {
 // bytes readable (decode: the shortest input; encode: 0, the loads are placed
 // at run time). f, count: M's n fields (each covers count[i] bytes).
 template <class = void>  // compiled where used
-constexpr lane_plan plan_lanes(const byte_lanes* f, const std::size_t* count, std::size_t n,
-                               std::size_t limit) noexcept {
+constexpr lane_plan plan_lanes(const byte_lanes* f, const std::size_t* count, std::size_t n, std::size_t limit,
+                               const fixed_byte* fixed = nullptr, std::size_t fixed_n = 0) noexcept {
     const auto in_window = [&](std::size_t i, std::size_t from) {
         return i < 64 && f[i].ok && f[i].off >= from && f[i].off + count[i] <= from + 16;
     };
@@ -183,9 +184,28 @@ constexpr lane_plan plan_lanes(const byte_lanes* f, const std::size_t* count, st
                     w.lim[lane] = static_cast<std::int8_t>(f[i].width - 0x80);
                 }
     };
-    if (best_loads == 16) fill(p.win[0], 16, p.first + 16 <= limit ? p.first : limit - 16, 0);
+    // Decode: one load of w bytes, placed to hold the fixed bytes too where it can.
+    const auto place = [&](std::size_t w) {
+        std::size_t lo = last + 1 >= w ? last + 1 - w : 0, hi = p.first < limit - w ? p.first : limit - w;
+        std::size_t fmin = limit, fmax = 0;
+        for (std::size_t k = 0; k < fixed_n; ++k) {
+            fmin = fixed[k].offset < fmin ? fixed[k].offset : fmin;
+            fmax = fixed[k].offset > fmax ? fixed[k].offset : fmax;
+        }
+        if (fixed_n != 0 && fmax + 1 >= w && fmax + 1 - w > lo) lo = fmax + 1 - w;
+        if (fixed_n != 0 && fmin < hi) hi = fmin;
+        const bool all = fixed_n != 0 && lo <= hi;
+        const std::size_t at = all ? lo : (p.first + w <= limit ? p.first : limit - w);
+        fill(p.win[0], static_cast<unsigned>(w == 16 ? 16 : 1), at, 0);
+        for (std::size_t k = 0; k < fixed_n && all; ++k) {  // valid: byte - value in [0, 0]
+            p.win[0].add[fixed[k].offset - at] = static_cast<std::uint8_t>(0x80 - fixed[k].value);
+            p.win[0].lim[fixed[k].offset - at] = -128;
+        }
+        p.fixed_in = all;
+    };
+    if (best_loads == 16) place(16);
     else if (best_loads == 2) fill(p.win[0], 2, p.first, last - 7);
-    else if (best_loads == 1 && limit != 0) fill(p.win[0], 1, p.first + 8 <= limit ? p.first : limit - 8, 0);
+    else if (best_loads == 1 && limit != 0) place(8);
     else if (best_loads == 1) fill(p.win[0], 1, p.first, 0), fill(p.win[1], 1, last >= 7 ? last - 7 : 0, 0);
     return p;
 }
@@ -194,7 +214,8 @@ constexpr lane_plan plan_of(std::size_t limit, std::index_sequence<I...>) noexce
     const byte_lanes f[] = {lanes_of(lane_shape_of<shape_t<M, I>, Member>(), field_v<M, I>.valid.min,
                                      field_v<M, I>.valid.max, field_v<M, I>.offset, shape_t<M, I>::count)...};
     const std::size_t count[] = {shape_t<M, I>::count...};
-    return plan_lanes(f, count, sizeof...(I), limit);
+    if constexpr (Member) return plan_lanes(f, count, sizeof...(I), limit);
+    else return plan_lanes(f, count, sizeof...(I), limit, table_v<M>.fixed.data(), fixed_count_v<M>);
 }
 // M's plan: encode's (Member: the members, when their bytes lie as on the
 // wire, checked at run time) or decode's (the wire bytes; the shortest input
