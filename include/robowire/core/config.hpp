@@ -154,9 +154,9 @@
 // ROBOWIRE_SSE2: 1 lets the OSP scanner look for start bytes 64 at a time
 // with SSE2 vector compares, inline, in chunks of 64 bytes or more (16 at a
 // time in shorter ones), and (not under ROBOWIRE_OPTIMIZE_SIZE) decode and
-// encode check the ranges of a message's one-byte fields with one vector
-// test where that takes fewer instructions; 0 calls memchr and checks field
-// by field. Default 1 where g++ or clang++ targets SSE2 (x86-64 always),
+// encode check the ranges of a message's one-byte fields (and fixed bytes)
+// with one vector test, flag bytes as one word, where that takes fewer
+// instructions; 0 calls memchr and checks field by field. Default 1 where g++ or clang++ targets SSE2 (x86-64 always),
 // else 0. Same results either way.
 #ifndef ROBOWIRE_SSE2
 #if defined(__SSE2__) && (defined(__GNUC__) || defined(__clang__))
