@@ -92,8 +92,9 @@ struct lane_window {
 struct lane_plan {
     bool use = false;
     std::uint64_t covered = 0;
-    std::size_t anchor = 0;  // a covered field, the first tested (encode finds its member)
-    std::size_t first = 0;   // its wire offset
+    std::uint64_t mirror = 0;  // encode: fields whose members must lie as their wire bytes (all a load reads)
+    std::size_t anchor = 0;    // a covered field, the first tested (encode finds its member)
+    std::size_t first = 0;     // its wire offset
     // The vector test: win[0]; encode of 8 bytes or less also win[1], the load
     // ending at the last byte tested (for the object whose end win[0] passes).
     lane_window win[2];
@@ -111,7 +112,8 @@ struct lane_plan {
 // at run time). f, count: M's n fields (each covers count[i] bytes).
 template <class = void>  // compiled where used
 constexpr lane_plan plan_lanes(const byte_lanes* f, const std::size_t* count, std::size_t n, std::size_t limit,
-                               const fixed_byte* fixed = nullptr, std::size_t fixed_n = 0) noexcept {
+                               const fixed_byte* fixed = nullptr, std::size_t fixed_n = 0,
+                               const std::size_t* offs = nullptr, const std::size_t* flat = nullptr) noexcept {
     const auto in_window = [&](std::size_t i, std::size_t from) {
         return i < 64 && f[i].ok && f[i].off >= from && f[i].off + count[i] <= from + 16;
     };
@@ -207,6 +209,35 @@ constexpr lane_plan plan_lanes(const byte_lanes* f, const std::size_t* count, st
     else if (best_loads == 2) fill(p.win[0], 2, p.first, last - 7);
     else if (best_loads == 1 && limit != 0) place(8);
     else if (best_loads == 1) fill(p.win[0], 1, p.first, 0), fill(p.win[1], 1, last >= 7 ? last - 7 : 0, 0);
+    if (limit == 0) {  // encode: a load reads only bytes of fields whose members are their wire bytes
+        const auto held = [&](std::size_t from, std::size_t w, bool mark) {
+            bool all = true;
+            for (std::size_t b = from; b < from + w; ++b) {
+                bool in = false;
+                for (std::size_t i = 0; i < n && i < 64; ++i)
+                    if (flat[i] != 0 && b >= offs[i] && b < offs[i] + flat[i]) {
+                        in = true;
+                        if (mark) p.mirror |= std::uint64_t{1} << i;
+                    }
+                all = all && in;
+            }
+            return all;
+        };
+        const auto window_held = [&](const lane_window& w, bool mark) {
+            return w.loads == 0 || (held(w.at[0], 8, mark) && (w.loads != 2 || held(w.at[1], 8, mark)));
+        };
+        if (!window_held(p.win[1], false)) p.win[1] = lane_window{};
+        if (!window_held(p.win[0], false)) p.win[0] = p.win[1], p.win[1] = lane_window{};
+        if (best != n && p.win[0].loads == 0)  // no load left: the fields go back to their own checks
+            for (std::size_t i = 0; i < n && i < 64; ++i)
+                if (in_window(i, p.first)) p.covered &= ~(std::uint64_t{1} << i);
+        for (std::size_t k = 0; k < p.words; ++k)
+            if (!held(p.word_at[k], p.word_size[k], false)) return lane_plan{};  // rare: no plan
+        (void)window_held(p.win[0], true), (void)window_held(p.win[1], true);
+        for (std::size_t k = 0; k < p.words; ++k) (void)held(p.word_at[k], p.word_size[k], true);
+        p.mirror |= p.covered;
+        if (p.covered == 0) return lane_plan{};
+    }
     return p;
 }
 template <class M, bool Member, std::size_t... I>
@@ -214,7 +245,13 @@ constexpr lane_plan plan_of(std::size_t limit, std::index_sequence<I...>) noexce
     const byte_lanes f[] = {lanes_of(lane_shape_of<shape_t<M, I>, Member>(), field_v<M, I>.valid.min,
                                      field_v<M, I>.valid.max, field_v<M, I>.offset, shape_t<M, I>::count)...};
     const std::size_t count[] = {shape_t<M, I>::count...};
-    if constexpr (Member) return plan_lanes(f, count, sizeof...(I), limit);
+    // a member that holds exactly its wire bytes: its size, else 0
+    const std::size_t offs[] = {field_v<M, I>.offset...};
+    const std::size_t flat[] = {
+        (!shape_t<M, I>::is_optional && sizeof(typename shape_t<M, I>::member_type) == shape_t<M, I>::size
+             ? shape_t<M, I>::size
+             : 0)...};
+    if constexpr (Member) return plan_lanes(f, count, sizeof...(I), limit, nullptr, 0, offs, flat);
     else return plan_lanes(f, count, sizeof...(I), limit, table_v<M>.fixed.data(), fixed_count_v<M>);
 }
 // M's plan: encode's (Member: the members, when their bytes lie as on the
