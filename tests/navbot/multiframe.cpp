@@ -55,6 +55,9 @@ TEST_CASE("navbot: fragmenter golden frames", "[navbot][multiframe]") {
     CHECK(seen[0] == test::hex("55 AA 02 01 00 01 02 03 04 05 06 07 08 09 0A 0B 0C 0D 0E 0F"));
     CHECK(seen[1] == test::hex("55 AA 02 00 00 10 00 00 00 00 00 00 00 00 00 00 00 00 00 00"));
     CHECK(std::next(empty.begin()) == empty.end());
+    CHECK(std::next(frames.begin(), 2) == frames.end());
+    CHECK(frames.begin() != std::next(frames.begin()));
+    CHECK(decltype(frames.begin()){} == frames.end());
     CHECK(*empty.begin() == test::hex("55 AA 01 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00"));
     // 31 characters: 15 + 15 + 1
     constexpr std::string_view text31 = R"({"type":"get_device_info","x":})";

@@ -4,6 +4,8 @@
 
 #include "../core/config.hpp"  // first: the C++ version check
 
+#include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -31,6 +33,18 @@ inline namespace ROBOWIRE_MODE_NAMESPACE {
 // Byte is std::uint8_t (binary payloads) or char (text).
 template <class Byte>
 class basic_fragmenter {
+    // A bytes<20> is its size (one byte), then its bytes, and words are
+    // little-endian: a frame's size and first bytes are stored as one word.
+    static constexpr bool head_fits() noexcept {
+        if constexpr (sizeof(bytes<frame_size>) != frame_size + 1 || std::endian::native != std::endian::little) {
+            return false;
+        } else {
+            const auto b = std::bit_cast<std::array<std::uint8_t, frame_size + 1>>(bytes<frame_size>{header1});
+            return b[0] == 1 && b[1] == header1 && b[2] == 0;
+        }
+    }
+    static constexpr bool head_store = !ROBOWIRE_OPTIMIZE_SIZE && head_fits();
+
 public:
     // capacity_exceeded if the payload needs more than 256 frames.
     static constexpr result<basic_fragmenter> make(std::uint8_t command, std::span<const Byte> payload) noexcept {
@@ -47,41 +61,86 @@ public:
                           from < payload_.size() ? payload_.size() - from : 0);
     }
 
-    // Holds its own position, command and frame count (not a pointer to the
-    // fragmenter): a loop that hands each frame to a driver keeps them in registers.
-    class iterator {
+    // An iterator holds its own position and the frame's first bytes (not a
+    // pointer to the fragmenter): a loop that hands each frame to a driver
+    // keeps them in registers. Frames one byte at a time (ROBOWIRE_OPTIMIZE_SIZE):
+    class frame_iterator {
     public:
         using value_type = bytes<frame_size>;
         using difference_type = std::ptrdiff_t;
-        constexpr iterator() noexcept = default;
+        constexpr frame_iterator() noexcept = default;
         constexpr value_type operator*() const noexcept {
             return make_frame(command_, static_cast<std::uint8_t>(frames_ - 1), end_ - left_, left_);
         }
-        constexpr iterator& operator++() noexcept {
+        constexpr frame_iterator& operator++() noexcept {
             left_ -= payload_size;  // wraps past the last frame, where only frames_ is read
             --frames_;
             return *this;
         }
-        constexpr iterator operator++(int) noexcept {
+        constexpr frame_iterator operator++(int) noexcept {
             auto t = *this;
             ++*this;
             return t;
         }
-        friend constexpr bool operator==(const iterator& a, const iterator& b) noexcept {
+        friend constexpr bool operator==(const frame_iterator& a, const frame_iterator& b) noexcept {
             return a.frames_ == b.frames_;
         }
 
     private:
         friend class basic_fragmenter;
-        constexpr iterator(const Byte* end, std::size_t left, std::size_t frames, std::uint8_t command) noexcept
+        constexpr frame_iterator(const Byte* end, std::size_t left, std::size_t frames, std::uint8_t command) noexcept
             : end_(end), left_(left), frames_(frames), command_(command) {}
         const Byte* end_ = nullptr;  // end of the payload
         std::size_t left_ = 0;       // payload bytes from this frame's on (end_ - left_ is its first)
         std::size_t frames_ = 0;     // frames from this one on (0: end)
         std::uint8_t command_ = 0;
     };
+    // With a frame's size and first bytes as one word (head_store):
+    class word_iterator {
+    public:
+        using value_type = bytes<frame_size>;
+        using difference_type = std::ptrdiff_t;
+        constexpr word_iterator() noexcept = default;
+        constexpr value_type operator*() const noexcept {
+            if (ROBOWIRE_CONSTANT_EVALUATED())
+                return make_frame(static_cast<std::uint8_t>(head_ >> 24), static_cast<std::uint8_t>(head_ >> 32),
+                                  last_ + at_, static_cast<std::size_t>(static_cast<std::ptrdiff_t>(tail_) - at_));
+            return head_frame(head_, last_ + at_, at_ == 0 ? tail_ : payload_size);
+        }
+        constexpr word_iterator& operator++() noexcept {
+            at_ += static_cast<std::ptrdiff_t>(payload_size);  // past the last frame: payload_size, the end
+            head_ -= std::uint64_t{1} << 32;                   // remaining, byte 4 of the word
+            return *this;
+        }
+        constexpr word_iterator operator++(int) noexcept {
+            auto t = *this;
+            ++*this;
+            return t;
+        }
+        friend constexpr bool operator==(const word_iterator& a, const word_iterator& b) noexcept {
+            return a.at_ == b.at_;
+        }
+
+    private:
+        friend class basic_fragmenter;
+        constexpr word_iterator(const Byte* last, std::size_t at_last, std::size_t tail, std::uint64_t head) noexcept
+            : last_(last), at_(-static_cast<std::ptrdiff_t>(at_last)), tail_(tail), head_(head) {}
+        const Byte* last_ = nullptr;                                     // the last frame's payload
+        std::ptrdiff_t at_ = static_cast<std::ptrdiff_t>(payload_size);  // this frame's payload: last_ + at_ (<= 0)
+        std::size_t tail_ = 0;                                           // payload bytes of the last frame (0..15)
+        std::uint64_t head_ =
+            0;  // a bytes<20>'s first 8 bytes: size 20, 55 AA command remaining 00, 2 payload bytes (0)
+    };
+    using iterator = std::conditional_t<head_store, word_iterator, frame_iterator>;
     constexpr iterator begin() const noexcept {
-        return {payload_.data() + payload_.size(), payload_.size(), size(), command_};
+        if constexpr (head_store) {
+            const std::size_t last = (size() - 1) * payload_size;  // the last frame's first payload byte
+            return {payload_.data() + last, last, payload_.size() - last,
+                    frame_size | std::uint64_t{header1} << 8 | std::uint64_t{header2} << 16 |
+                        std::uint64_t{command_} << 24 | std::uint64_t{size() - 1} << 32};
+        } else {
+            return {payload_.data() + payload_.size(), payload_.size(), size(), command_};
+        }
     }
     constexpr iterator end() const noexcept { return {}; }
 
@@ -102,6 +161,19 @@ private:
             std::memcpy(out.data() + 5, from, payload_size);
         } else {  // the last frame's: two fixed-size copies, not a byte loop that checks the end at every byte
             codec::copy_small(out.data() + 5, reinterpret_cast<const std::uint8_t*>(from), left);
+        }
+        return out;
+    }
+    // A frame from its size and first bytes as one word (head_store), and the
+    // first n <= 15 bytes at `from` (n < 15: the last frame, zero-padded).
+    static bytes<frame_size> head_frame(std::uint64_t head, const Byte* from, std::size_t n) noexcept {
+        bytes<frame_size> out(codec::unset_t{});
+        std::memcpy(static_cast<void*>(&out), &head, sizeof head);  // its last two bytes: the payload's, written next
+        if (n == payload_size) [[likely]] {                         // a whole frame's payload: a constant-size copy
+            std::memcpy(out.data() + 5, from, payload_size);
+        } else {  // the last frame's: zeros, then two fixed-size copies
+            std::memset(out.data() + 5, 0, payload_size);
+            codec::copy_small(out.data() + 5, reinterpret_cast<const std::uint8_t*>(from), n);
         }
         return out;
     }
