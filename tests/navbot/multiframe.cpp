@@ -26,6 +26,23 @@ constexpr std::size_t frames_of_json(std::string_view text) {
     const auto f = json_frames(text);
     return f ? f->size() : 0;
 }
+// A frame's 20 bytes: 55 AA command remaining 00, then 15 times `fill`.
+constexpr std::array<std::uint8_t, 20> frame_bytes(std::uint8_t cmd, std::uint8_t remaining, std::uint8_t fill) {
+    std::array<std::uint8_t, 20> w{0x55, 0xAA, cmd, remaining, 0};
+    for (std::size_t i = 5; i < 20; ++i) w[i] = fill;
+    return w;
+}
+// A late repeat of a message's last frame, after a one-frame message, is a
+// repeat; a frame that differs from the last one only in its payload is not.
+constexpr bool late_repeat_found() {
+    reassembler<45> r;
+    bool ok = r.push(frame_bytes(2, 1, 'a')).value() == reassembly::need_more;
+    ok = ok && r.push(frame_bytes(2, 0, 'b')).value() == reassembly::complete;
+    ok = ok && r.push(frame_bytes(0x10, 0, 'm')).value() == reassembly::complete;
+    ok = ok && r.push(frame_bytes(2, 0, 'b')).value() == reassembly::duplicate;
+    ok = ok && r.push(frame_bytes(2, 0, 'c')).value() == reassembly::complete;
+    return ok && r.payload().size() == 15 && r.payload()[0] == 'c';
+}
 // Frame k of the text's frames, reached by iterating (k++ then ++k).
 constexpr bytes<frame_size> iterated_frame(std::string_view text, std::size_t k) {
     const auto f = json_frames(text).value();
@@ -223,6 +240,43 @@ TEST_CASE("navbot: repeated frames", "[navbot][multiframe]") {
     // a late repeat of the multi-frame message's last frame is still a repeat, not a one-frame message
     CHECK(r.push(make_frame(2, 0, 'c')).value() == reassembly::duplicate);
     CHECK(r.command() == 0x10);
+}
+
+TEST_CASE("navbot: repeated frames, pushed as bytes", "[navbot][multiframe]") {
+    reassembler<45> r;
+    CHECK(r.push(frame_bytes(2, 2, 'a')).value() == reassembly::need_more);
+    CHECK(r.push(frame_bytes(2, 1, 'b')).value() == reassembly::need_more);
+    CHECK(r.push(frame_bytes(2, 1, 'b')).value() == reassembly::duplicate);
+    CHECK(r.push(frame_bytes(2, 2, 'a')).value() == reassembly::restarted);  // not the last frame: a new start
+    CHECK(r.push(frame_bytes(2, 1, 'b')).value() == reassembly::need_more);
+    CHECK(r.push(frame_bytes(2, 0, 'c')).value() == reassembly::complete);
+    CHECK(r.push(frame_bytes(2, 0, 'c')).value() == reassembly::duplicate);
+    REQUIRE(r.payload().size() == 45);
+    CHECK((r.payload()[0] == 'a' && r.payload()[15] == 'b' && r.payload()[30] == 'c'));
+    CHECK(r.push(frame_bytes(0x10, 0, 'd')).value() == reassembly::complete);
+    CHECK(r.push(frame_bytes(2, 0, 'c')).value() == reassembly::duplicate);  // late repeat
+    CHECK(r.push(frame_bytes(2, 1, 'c')).value() == reassembly::need_more);  // same payload, other remaining
+    CHECK(r.push(frame_bytes(2, 0, 'c')).value() == reassembly::complete);
+    REQUIRE(r.payload().size() == 30);
+    STATIC_REQUIRE(late_repeat_found());
+}
+
+TEST_CASE("navbot: a discarded frame inside a message, pushed as bytes", "[navbot][multiframe]") {
+    reassembler<45> r;
+    CHECK(r.push(frame_bytes(2, 5, 'a')).error() == error{errc::capacity_exceeded, 3});  // 6 frames > 45 bytes
+    CHECK(r.push(frame_bytes(3, 2, 'x')).value() == reassembly::need_more);
+    CHECK(r.push(frame_bytes(2, 4, 'a')).value() == reassembly::discarded);  // the broken message goes on
+    CHECK(r.push(frame_bytes(2, 4, 'a')).value() == reassembly::duplicate);
+    CHECK(r.push(frame_bytes(3, 1, 'y')).value() == reassembly::need_more);
+    CHECK(r.push(frame_bytes(3, 1, 'y')).value() == reassembly::duplicate);
+    CHECK(r.push(frame_bytes(3, 0, 'z')).value() == reassembly::complete);
+    CHECK(r.command() == 3);
+    REQUIRE(r.payload().size() == 45);
+    CHECK((r.payload()[0] == 'x' && r.payload()[15] == 'y' && r.payload()[30] == 'z'));
+    CHECK(r.push(frame_bytes(3, 0, 'z')).value() == reassembly::duplicate);
+    CHECK(r.push(frame_bytes(2, 3, 'a')).value() == reassembly::discarded);
+    r.clear();
+    CHECK(r.push(frame_bytes(2, 3, 'a')).error() == error{errc::capacity_exceeded, 3});
 }
 
 TEST_CASE("navbot: the sender starts a message over", "[navbot][multiframe]") {

@@ -271,13 +271,16 @@ class reassembler {
 public:
     constexpr result<reassembly> push(std::span<const std::uint8_t> frame_bytes) noexcept {
         if constexpr (!ROBOWIRE_OPTIMIZE_SIZE) {
-            if (!ROBOWIRE_CONSTANT_EVALUATED() && state_ == state::collecting && frame_bytes.size() == frame_size &&
+            if (!ROBOWIRE_CONSTANT_EVALUATED() && frame_bytes.size() == frame_size &&
                 codec::fixed_bytes_match<frame>(codec::deferred<reassembler>(frame_bytes))) {
                 const std::uint8_t* p = frame_bytes.data();
-                // command and remaining against command_ and last_remaining_ - 1, as one 16-bit word
-                const std::uint16_t key = load_le<std::uint16_t>(p + 2);
-                if (key + 0x100 == (command_ | last_remaining_ << 8)) [[likely]]
-                    return append_in_place(p, key);
+                // collecting, the last frame kept the last appended, and command
+                // and remaining against now_.command and now_.last_remaining - 1:
+                // one 32-bit word (collecting: last_remaining is not 0, no carry)
+                const std::uint32_t key = load_le<std::uint16_t>(p + 2);
+                const std::uint32_t now = load_le<std::uint32_t>(reinterpret_cast<const std::uint8_t*>(&now_));
+                if ((key << 8) + 0x02010001u == now) [[likely]]
+                    return append_in_place(p, key, now);
             }
         }
         const auto f = codec::decode_at<frame>(codec::deferred<reassembler>(frame_bytes).data(), frame_bytes.size());
@@ -287,7 +290,7 @@ public:
     constexpr result<reassembly> push(const frame& f) noexcept { return to_result(take(f)); }
 
     // The completed message (valid after push returned `complete`, until the next push).
-    constexpr std::uint8_t command() const noexcept { return command_; }
+    constexpr std::uint8_t command() const noexcept { return now_.command; }
     // Payload bytes so far, with the last frame's zero padding (the wire does not carry the length).
     constexpr std::span<const std::uint8_t> payload() const noexcept { return {buf_.data(), size_}; }
     // The payload as text (e.g. a JSON reply), without the trailing zero padding.
@@ -299,20 +302,23 @@ public:
     // The completed message's text if it is one whole JSON object (see
     // json_object), else bad_json; too_short while no message is complete.
     result<std::string_view> json() const noexcept {
-        if (state_ != state::complete) return fail(errc::too_short, size_);
+        if (now_.phase != state::complete) return fail(errc::too_short, size_);
         return json_object(text());
     }
-    constexpr bool in_progress() const noexcept { return state_ == state::collecting; }
+    constexpr bool in_progress() const noexcept { return now_.phase == state::collecting; }
     static constexpr std::size_t capacity() noexcept { return Capacity; }
     // Forgets everything: partial message, the message being discarded, the last frame.
     constexpr void clear() noexcept {
         drop();
-        has_last_ = false;
+        now_.last = kept::none;
         skipping_ = false;
     }
 
 private:
     enum class state : std::uint8_t { idle, collecting, complete };
+    // Where the last frame of a multi-frame message is: none, the last frame
+    // appended (command, last_remaining, the last 15 bytes of buf_), or last_.
+    enum class kept : std::uint8_t { none, stored, appended };
 
     // An outcome as take() returns it: errc::ok, the outcome in the offset.
     static constexpr error outcome(reassembly r) noexcept { return {errc::ok, static_cast<std::uint16_t>(r)}; }
@@ -322,30 +328,27 @@ private:
     }
     // push(frame)'s work; its outcome as one word (a register on every target).
     constexpr error take(const frame& f) noexcept {
-        if (has_last_ && f == last_) return outcome(reassembly::duplicate);  // a completed message stays readable
-        if (state_ == state::complete) {
-            state_ = state::idle;
-            size_ = 0;
-        }
+        if (is_last(f)) return outcome(reassembly::duplicate);  // a completed message stays readable
+        if (now_.phase == state::complete) drop();
         if (skipping_ && f.command == skip_command_) {
             if (f.remaining == 0) skipping_ = false;
             remember(f);  // so that a repeat of it is not taken for a new message
             return outcome(reassembly::discarded);
         }
-        if (state_ == state::idle) return start(f);
+        if (now_.phase == state::idle) return start(f);
         // collecting
-        if (f.command != command_) {
+        if (f.command != now_.command) {
             if (f.remaining == 0) return outcome(reassembly::single);
-            const auto broken = command_;
+            const auto broken = now_.command;
             if (const error e = start(f)) return e;
             skip(broken);  // the rest of the broken message
             return fail(errc::command_changed, 2);
         }
-        if (f.remaining >= last_remaining_) {  // the sender started over
+        if (f.remaining >= now_.last_remaining) {  // the sender started over
             if (const error e = start(f)) return e;
             return outcome(reassembly::restarted);
         }
-        if (f.remaining + 1 != last_remaining_) {  // frames lost
+        if (f.remaining + 1 != now_.last_remaining) {  // frames lost
             drop();
             remember(f);
             if (f.remaining != 0) skip(f.command);
@@ -356,9 +359,9 @@ private:
     // The first frame of a message (the partial one, if any, is dropped).
     constexpr error start(const frame& f) noexcept {
         drop();
-        command_ = f.command;
+        now_.command = f.command;
         if ((std::size_t{f.remaining} + 1) > Capacity / payload_size) {
-            has_last_ = false;
+            now_.last = kept::none;
             if (f.remaining != 0) {
                 remember(f);
                 skip(f.command);
@@ -378,36 +381,60 @@ private:
         size_ = at + payload_size;
         // repeats are recognised for frames of multi-frame messages only: a
         // one-frame message sent twice (e.g. the same maneuver) is two messages
-        if (f.remaining != 0 || size_ > payload_size) remember(f);
-        last_remaining_ = f.remaining;
-        state_ = f.remaining == 0 ? state::complete : state::collecting;
+        if (f.remaining != 0 || size_ > payload_size) {
+            if constexpr (ROBOWIRE_OPTIMIZE_SIZE) remember(f);
+            else now_.last = kept::appended;  // copied to last_ when the message is dropped
+        }
+        now_.last_remaining = f.remaining;
+        now_.phase = f.remaining == 0 ? state::complete : state::collecting;
         return outcome(f.remaining == 0 ? reassembly::complete : reassembly::need_more);
     }
     // The next frame of the message being collected, from its bytes: what
     // push(frame) does with it. While collecting, a message being discarded
     // has another command (skip() follows the start of another command, or
     // leaves the state idle), and the last frame remembered is the last one
-    // appended (its `remaining` is last_remaining_) or one of the discarded
+    // appended (its `remaining` is now_.last_remaining) or one of the discarded
     // command: neither a repeat nor a frame to discard can be this one.
     // key: the frame's command and remaining, as push loaded them.
-    result<reassembly> append_in_place(const std::uint8_t* p, std::uint16_t key) noexcept {
-        const auto remaining = static_cast<std::uint8_t>(key >> 8);
-        std::memcpy(buf_.data() + size_, p + 5, payload_size);
-        size_ += payload_size;  // more than one frame's: remembered
-        has_last_ = true;
-        last_.command = static_cast<std::uint8_t>(key);
-        last_.remaining = remaining;
-        std::memcpy(last_.payload.data(), p + 5, payload_size);
-        last_remaining_ = remaining;
-        state_ = remaining == 0 ? state::complete : state::collecting;
-        return remaining == 0 ? reassembly::complete : reassembly::need_more;
+    // now: now_ as one word, as push loaded it.
+    result<reassembly> append_in_place(const std::uint8_t* p, std::uint32_t key, std::uint32_t now) noexcept {
+        const std::size_t at = size_;
+        std::memcpy(buf_.data() + at, p + 5, payload_size);
+        size_ = at + payload_size;
+        // phase complete (2) or collecting (1), last_remaining the frame's,
+        // the last frame still the last appended (more than one frame's: remembered)
+        const std::uint32_t done = key < 0x100;  // remaining 0
+        store_le(reinterpret_cast<std::uint8_t*>(&now_), now - 0x10000u + done);
+        static_assert(static_cast<int>(state::collecting) == 1 && static_cast<int>(state::complete) == 2 &&
+                      static_cast<int>(kept::appended) == 2 && static_cast<int>(reassembly::need_more) == 0 &&
+                      static_cast<int>(reassembly::complete) == 1);
+        return static_cast<reassembly>(done);  // complete or need_more
     }
+    // f is the last frame remembered.
+    constexpr bool is_last(const frame& f) const noexcept {
+        if (now_.last == kept::stored) return f == last_;
+        if constexpr (ROBOWIRE_OPTIMIZE_SIZE) return false;
+        return now_.last == kept::appended && f.command == now_.command && f.remaining == now_.last_remaining &&
+               detail::same_bytes(f.payload.data(), buf_.data() + size_ - payload_size, payload_size);
+    }
+    // Drops the message; the last frame appended, if remembered, is copied to last_.
     constexpr void drop() noexcept {
-        state_ = state::idle;
+        if (!ROBOWIRE_OPTIMIZE_SIZE && now_.last == kept::appended) {
+            last_.command = now_.command;
+            last_.remaining = now_.last_remaining;
+            const std::uint8_t* from = buf_.data() + size_ - payload_size;
+            if (ROBOWIRE_CONSTANT_EVALUATED()) {
+                for (std::size_t i = 0; i < payload_size; ++i) last_.payload[i] = from[i];
+            } else {
+                std::memcpy(last_.payload.data(), from, payload_size);
+            }
+            now_.last = kept::stored;
+        }
+        now_.phase = state::idle;
         size_ = 0;
     }
     constexpr void remember(const frame& f) noexcept {
-        has_last_ = true;
+        now_.last = kept::stored;
         last_ = f;
     }
     constexpr void skip(std::uint8_t command) noexcept {
@@ -417,13 +444,17 @@ private:
 
     std::array<std::uint8_t, Capacity> buf_{};
     std::size_t size_ = 0;
-    frame last_{};  // the last frame seen of a multi-frame message (if has_last_)
-    std::uint8_t command_ = 0;
-    std::uint8_t last_remaining_ = 0;  // `remaining` of the last frame taken (after command_: one word with it)
-    std::uint8_t skip_command_ = 0;    // command of the broken message being discarded
+    frame last_{};     // the last frame seen of a multi-frame message (if now_.last is stored)
+    struct progress {  // one 32-bit word for push()
+        state phase = state::idle;
+        std::uint8_t command = 0;
+        std::uint8_t last_remaining = 0;  // `remaining` of the last frame taken
+        kept last = kept::none;           // the last frame seen of a multi-frame message
+    };
+    static_assert(sizeof(progress) == 4);
+    progress now_{};
+    std::uint8_t skip_command_ = 0;  // command of the broken message being discarded
     bool skipping_ = false;
-    bool has_last_ = false;
-    state state_ = state::idle;
 };
 }  // namespace ROBOWIRE_MODE_NAMESPACE
 
