@@ -88,58 +88,104 @@ public:
     constexpr void reset() noexcept { *this = scanner{}; }
 
 private:
-    // A chunk of 10 bytes or more: start_finder finds the start byte, frames
-    // are checked and reported in place, and where start bytes are dense,
-    // scan_words takes 8 positions at a time. Out of line: a caller's loop
-    // that feeds one byte at a time stays small.
+    // A chunk of 10 bytes or more: masks of the start bytes over 64 or 16
+    // positions a step, and of whole frames where a start byte is no frame.
+    // Out of line: a caller's loop that feeds one byte at a time stays small.
     template <class OnFrame>
     ROBOWIRE_NOINLINE constexpr void feed_chunk(const std::uint8_t* p, std::size_t n, OnFrame& on_frame) {
         std::size_t i = len_ != 0 ? finish_held(p, on_frame) : 0;  // the next position to look at
         std::size_t mark = i;  // bytes from mark up to the next frame or held candidate are skipped
         const std::size_t last = n - (frame_size - 1);  // a window starting here or later ends past the chunk
-        start_finder starts{p, n};
-        std::size_t at = p[i] == start1 ? i : starts.next(i);  // after a held frame, often the next one
-        while (at < last) {
-            i = at;  // a start byte
-            if (rest_of_frame(p + i)) {
-                skipped_ += i - mark;
-                do {  // frames back to back: one check each, no search
-                    ++frames_;
-                    on_frame(frame_bytes(p + i, frame_size));
-                    i += frame_size;
-                } while (i < last && frame_at(p + i));
-                mark = i;
-                // the last 9 positions are looked at one by one below
-                at = i < last ? (p[i] == start1 ? i : starts.next(i)) : i;
-                continue;
-            }
-            ++false_starts_;
-            at = starts.next(++i);
-            if (words_ok && at - i < dense_gap && at < last) {  // start bytes close together: 8 positions a step
-                skipped_ += at - mark;
-                i = mark = scan_words(p, at, n, on_frame);
-                at = i < last && p[i] == start1 ? i : starts.next(i);
+        if (i < last && frame_at(p + i)) i = frames_from(p, i, last, mark, on_frame);  // often after a held frame
+        while (i + 64 <= last) i = block<64>(p, i, starts64(p + i), last, mark, on_frame);
+        if (i + 32 <= last && i + 64 >= n && equal_mask<16>(p + i, start1) == 0) {  // none in 16: any left?
+            i += 16;
+            if (!any_start(p, i, n)) {
+                skipped_ += n - mark;
+                return;
             }
         }
-        // The last 9 positions: their windows end past the chunk. Keep the
-        // first candidate that can still become a frame.
-        for (i = at; i < n; ++i) {
-            if (p[i] != start1) continue;
-            const std::size_t m = n - i;  // at most 9
-            if ((m < 2 || p[i + 1] == start2) && (m < 9 || p[i + 8] == end1)) {
-                len_ = m;
-                codec::copy_small(buf_.data(), p + i, m);
-                break;
+        while (i < last) {
+            if (i + 16 <= last) {
+                i = block<16>(p, i, equal_mask<16>(p + i, start1), last, mark, on_frame);
+            } else if (n >= 25) {  // the 16 positions that end at last, those before i dropped
+                const std::size_t base = last - 16;
+                i = block<16>(p, base, equal_mask<16>(p + base, start1) >> (i - base) << (i - base), last, mark,
+                              on_frame);
+            } else if (p[i] != start1) {
+                ++i;
+            } else if (frame_at(p + i)) {
+                i = frames_from(p, i, last, mark, on_frame);
+            } else {
+                ++false_starts_;
+                ++i;
             }
-            ++false_starts_;
         }
-        skipped_ += i - mark;
+        // The last 9 positions (and those of a frame that ends in them): the
+        // first candidate that can still become a frame is held.
+        std::size_t at = n;  // the held candidate, or n
+        if (i < n && p[i] == start1 && tail_ok(p, i, n)) {
+            at = i;
+        } else if (i < n && n >= 16) {  // masks of the last 16 bytes: start bytes, and those followed by ST2
+            const std::size_t base = n - 16, from = i - base;                  // from: 7 or more
+            const std::uint64_t s = equal_mask<16>(p + base, start1) >> from;  // 9 bits at most
+            if (s != 0 && tail_ok(p, i + first_bit(s), n)) {
+                at = i + first_bit(s);
+            } else if (s != 0) {
+                std::uint64_t ok =
+                    s & (equal_mask<16>(p + base, start2) >> (from + 1) | std::uint64_t{1} << (15 - from));
+                if (p[n - 1] != end1) ok &= ~(std::uint64_t{1} << 7 >> from);  // at last, EN1 is there too
+                false_starts_ += popcount(ok != 0 ? s & ((std::uint64_t{1} << first_bit(ok)) - 1) : s);
+                if (ok != 0) at = i + first_bit(ok);
+            }
+        } else {
+            for (at = i; at < n && (p[at] != start1 || !tail_ok(p, at, n)); ++at) false_starts_ += p[at] == start1;
+        }
+        if (at < n) {
+            len_ = n - at;
+            codec::copy_small(buf_.data(), p + at, n - at);
+        }
+        skipped_ += at - mark;
     }
 
-    static constexpr std::size_t word = 8;        // positions per step of scan_words
-    static constexpr std::size_t dense_gap = 16;  // a start byte this close after a false start: scan_words
-    using word_t = std::uint64_t;
-    static constexpr word_t lanes(std::uint8_t b) noexcept { return word_t{b} * 0x0101010101010101u; }
+    // Frames back to back from the start byte at p[i], one check each; the
+    // bytes from mark to i are skipped. Returns the position to go on from.
+    template <class OnFrame>
+    constexpr std::size_t frames_from(const std::uint8_t* p, std::size_t i, std::size_t last, std::size_t& mark,
+                                      OnFrame& on_frame) {
+        skipped_ += i - mark;
+        do {
+            ++frames_;
+            on_frame(frame_bytes(p + i, frame_size));
+            i += frame_size;
+        } while (i < last && frame_at(p + i));
+        mark = i;
+        return i;
+    }
+    // The start bytes s of positions [base, base + W) (none before the one
+    // to go on from): the first frame there is reported with those after it,
+    // the start bytes before it are false starts. Returns where to go on.
+    template <std::size_t W, class OnFrame>
+    constexpr std::size_t block(const std::uint8_t* p, std::size_t base, std::uint64_t s, std::size_t last,
+                                std::size_t& mark, OnFrame& on_frame) {
+        if (s == 0) return base + W;
+        std::size_t k = first_bit(s);
+        if (!frame_at(p + base + k)) {
+            if ((s & (s - 1)) == 0) {  // a lone false start
+                ++false_starts_;
+                return base + W;
+            }
+            const std::uint64_t f = frames_mask<W>(p + base) & s;
+            false_starts_ += popcount(f != 0 ? s & ((std::uint64_t{1} << first_bit(f)) - 1) : s);
+            if (f == 0) return base + W;
+            k = first_bit(f);
+        }
+        return frames_from(p, base + k, last, mark, on_frame);
+    }
+    // Can a candidate at p[at] (n - at < 10 bytes to the chunk's end) still become a frame.
+    static constexpr bool tail_ok(const std::uint8_t* p, std::size_t at, std::size_t n) noexcept {
+        return (n - at < 2 || p[at + 1] == start2) && (n - at < 9 || p[at + 8] == end1);
+    }
 
     // The held candidate and the chunk's first 9 bytes, which complete every
     // window that starts in the held bytes: reports the first frame there or
@@ -164,90 +210,87 @@ private:
         skipped_ += held;
         return 0;
     }
-    // Index of the next start byte in p[from..n), or n.
-    static constexpr std::size_t find_start(const std::uint8_t* p, std::size_t from, std::size_t n) noexcept {
+
+    // Masks over W positions (16 or 64): bit k for p + k.
+    template <std::size_t W>  // p[k] == b
+    static constexpr std::uint64_t equal_mask(const std::uint8_t* p, std::uint8_t b) noexcept {
+        std::uint64_t m = 0;
+#if ROBOWIRE_SSE2
         if (!ROBOWIRE_CONSTANT_EVALUATED()) {
-#if ROBOWIRE_SSE2
-            return find_start_sse2(p, from, n);
-#else
-            const void* hit = std::memchr(p + from, start1, n - from);
-            return hit ? static_cast<std::size_t>(static_cast<const std::uint8_t*>(hit) - p) : n;
+            for (std::size_t k = 0; k < W; k += 16) m |= std::uint64_t{mask16(load16(p + k) == b)} << k;
+            return m;
+        }
 #endif
-        }
-        while (from < n && p[from] != start1) ++from;
-        return from;
+        for (std::size_t k = 0; k < W; k += 8) m |= zeros8(le8(p + k) ^ lanes(b)) << k;
+        return m;
     }
-    // The next start byte at or after `from` (no less than the last call's),
-    // in a chunk of n bytes: with SSE2 and n >= 64, from a mask of the start
-    // bytes in 64 bytes, kept between calls; else find_start.
-    struct start_finder {
-        const std::uint8_t* p;
-        std::size_t n;
-        std::size_t base = n;    // bits covers p[base, base + 64); none yet
-        std::uint64_t bits = 0;  // bit k: p[base + k] is a start byte
-        ROBOWIRE_ALWAYS_INLINE constexpr std::size_t next(std::size_t from) noexcept {
+    template <std::size_t W>  // a frame at p + k (reads p[0, W + 9))
+    static constexpr std::uint64_t frames_mask(const std::uint8_t* p) noexcept {
 #if ROBOWIRE_SSE2
-            if (!ROBOWIRE_CONSTANT_EVALUATED() && n >= 64) {
-                if (from - base < 64) {  // in the block of the last call
-                    if (const std::uint64_t m = bits & (~std::uint64_t{0} << (from - base)); m != 0)
-                        return base + first_bit(m);
-                    from = base + 64;
-                }
-                const block b = find_block(p, from, n);  // a value: the state stays in registers
-                base = b.base;
-                bits = b.bits;
-                return bits != 0 ? base + first_bit(bits) : n;
-            }
+        if (!ROBOWIRE_CONSTANT_EVALUATED()) {
+            std::uint64_t m = 0;
+            for (std::size_t k = 0; k < W; k += 16)
+                m |= std::uint64_t{mask16((load16(p + k) == start1) & (load16(p + k + 1) == start2) &
+                                          (load16(p + k + 8) == end1) & (load16(p + k + 9) == end2))}
+                     << k;
+            return m;
+        }
 #endif
-            return find_start(p, from, n);
-        }
-    };
-#if ROBOWIRE_SSE2
-    struct block {
-        std::size_t base;    // bits covers p[base, base + 64)
-        std::uint64_t bits;  // bit k: p[base + k] is a start byte; 0: none from `from` to n
-    };
-    // The first 64 bytes from `from` (n >= 64) that hold a start byte, as a mask.
-    static block find_block(const std::uint8_t* p, std::size_t from, std::size_t n) noexcept {
-        for (; from <= n - 64; from += 64) {
-            const v16 a = load16(p + from), b = load16(p + from + 16), c = load16(p + from + 32),
-                      d = load16(p + from + 48);
-            if (start_lanes(max16(max16(a, b), max16(c, d))) != 0) return {from, lanes64(a, b, c, d)};
-        }
-        if (from >= n) return {n, 0};
-        const std::size_t base = n - 64;  // the last 64 bytes, from on
-        return {base, lanes64(load16(p + base), load16(p + base + 16), load16(p + base + 32), load16(p + base + 48)) &
-                          (~std::uint64_t{0} << (from - base))};
+        return equal_mask<W>(p, start1) & equal_mask<W>(p + 1, start2) & equal_mask<W>(p + 8, end1) &
+               equal_mask<W>(p + 9, end2);
     }
-    // SSE2 (inline; no call per start byte as with memchr).
+    static constexpr std::uint64_t starts64(const std::uint8_t* p) noexcept {
+#if ROBOWIRE_SSE2  // start1 is 0xFF, the largest byte: none in the 64 if none in their maximum
+        if (!ROBOWIRE_CONSTANT_EVALUATED() &&
+            mask16(max16(max16(load16(p), load16(p + 16)), max16(load16(p + 32), load16(p + 48))) == start1) == 0)
+            return 0;
+#endif
+        return equal_mask<64>(p, start1);
+    }
+    // Any start byte in p[i, n), n - i in [16, 64].
+    static constexpr bool any_start(const std::uint8_t* p, std::size_t i, std::size_t n) noexcept {
+        const std::size_t e = n - 16, b = i + 16 < e ? i + 16 : e, c = i + 32 < e ? i + 32 : e;
+#if ROBOWIRE_SSE2
+        if (!ROBOWIRE_CONSTANT_EVALUATED())
+            return mask16(max16(max16(load16(p + i), load16(p + b)), max16(load16(p + c), load16(p + e))) == start1) !=
+                   0;
+#endif
+        return (equal_mask<16>(p + i, start1) | equal_mask<16>(p + b, start1) | equal_mask<16>(p + c, start1) |
+                equal_mask<16>(p + e, start1)) != 0;
+    }
+#if ROBOWIRE_SSE2
     using v16 = unsigned char __attribute__((vector_size(16)));
+    using c16 = char __attribute__((vector_size(16)));
     static v16 load16(const std::uint8_t* p) noexcept {
         v16 v;
         std::memcpy(&v, p, sizeof v);
         return v;
     }
-    static unsigned start_lanes(v16 v) noexcept {  // bit k: lane k holds a start byte
-        using c16 = char __attribute__((vector_size(16)));
-        return static_cast<unsigned>(__builtin_ia32_pmovmskb128((c16)(v == start1)));
+    template <class V>
+    static unsigned mask16(V v) noexcept {  // bit k: lane k is all ones
+        return static_cast<unsigned>(__builtin_ia32_pmovmskb128((c16)v));
     }
-    static v16 max16(v16 a, v16 b) noexcept { return a > b ? a : b; }    // start1 is 0xFF: FF where either is
-    static std::uint64_t lanes64(v16 a, v16 b, v16 c, v16 d) noexcept {  // bit k: lane k % 16 of the (k / 16)th
-        return start_lanes(a) | std::uint64_t{start_lanes(b)} << 16 | std::uint64_t{start_lanes(c)} << 32 |
-               std::uint64_t{start_lanes(d)} << 48;
-    }
-    static std::size_t first_bit(std::uint64_t m) noexcept { return static_cast<std::size_t>(std::countr_zero(m)); }
-    // 16 bytes a step, then one 16-byte load that ends at n.
-    static std::size_t find_start_sse2(const std::uint8_t* p, std::size_t from, std::size_t n) noexcept {
-        if (n - from < 16) {
-            while (from < n && p[from] != start1) ++from;
-            return from;
-        }
-        for (; n - from >= 16; from += 16)
-            if (const unsigned m = start_lanes(load16(p + from)); m != 0) return from + first_bit(m);
-        const unsigned m = start_lanes(load16(p + n - 16)) >> (16 - (n - from));  // the last n - from bytes
-        return m != 0 ? from + first_bit(m) : n;
-    }
+    static v16 max16(v16 a, v16 b) noexcept { return a > b ? a : b; }
 #endif
+    // 8 bytes, p[k] in byte k; bit k of zeros8: byte k is 0.
+    static constexpr std::uint64_t le8(const std::uint8_t* p) noexcept {
+        std::uint64_t w = 0;
+        for (std::size_t k = 0; k < 8; ++k) w |= std::uint64_t{p[k]} << 8 * k;
+        return w;
+    }
+    static constexpr std::uint64_t lanes(std::uint8_t b) noexcept { return b * std::uint64_t{0x0101010101010101u}; }
+    static constexpr std::uint64_t zeros8(std::uint64_t x) noexcept {
+        const std::uint64_t high = ~(((x & lanes(0x7F)) + lanes(0x7F)) | x) & lanes(0x80);  // exact: no carries
+        return (high >> 7) * 0x0102040810204080u >> 56;
+    }
+    static constexpr std::uint64_t popcount(std::uint64_t x) noexcept {  // no POPCNT instruction needed
+        x -= (x >> 1) & lanes(0x55);
+        x = (x & lanes(0x33)) + ((x >> 2) & lanes(0x33));
+        return ((x + (x >> 4)) & lanes(0x0F)) * lanes(1) >> 56;
+    }
+    static constexpr std::size_t first_bit(std::uint64_t m) noexcept {
+        return static_cast<std::size_t>(std::countr_zero(m));
+    }
     static constexpr bool frame_at(const std::uint8_t* w) noexcept {  // the four markers, two words at run time
         if (!ROBOWIRE_CONSTANT_EVALUATED() &&
             (std::endian::native == std::endian::little || std::endian::native == std::endian::big)) {
@@ -255,7 +298,6 @@ private:
         }
         return w[0] == start1 && w[1] == start2 && w[8] == end1 && w[9] == end2;
     }
-    static constexpr bool rest_of_frame(const std::uint8_t* w) noexcept { return frame_at(w); }  // after a start byte
     static std::uint16_t load2(const std::uint8_t* p) noexcept {
         std::uint16_t v;
         std::memcpy(&v, p, sizeof v);
@@ -265,74 +307,6 @@ private:
         return static_cast<std::uint16_t>(std::endian::native == std::endian::little ? first | second << 8
                                                                                      : first << 8 | second);
     }
-    // Eight positions at a time (where start bytes are dense, as in long
-    // runs of FF or FF AA): from i, reports the frames and counts the other
-    // start bytes as false starts, until 16 positions in a row hold no start
-    // byte or a frame follows the last one directly (the caller checks such
-    // frames one by one, more cheaply). Returns the position to go on from;
-    // the bytes from i up to it in no frame are counted as skipped.
-    static constexpr bool words_ok =
-        std::endian::native == std::endian::little || std::endian::native == std::endian::big;
-    template <class OnFrame>
-    ROBOWIRE_NOINLINE constexpr std::size_t scan_words(const std::uint8_t* p, std::size_t i, std::size_t n,
-                                                       OnFrame& on_frame) {
-        constexpr word_t low7 = lanes(0x7F), high = lanes(0x80);
-        std::size_t mark = i;
-        bool reported = false, empty = false;
-        while (i + word + frame_size - 1 <= n) {  // the windows of the 8 positions lie in the chunk
-            const word_t w0 = load(p + i);
-            const word_t ff = ((w0 & low7) + lanes(0x01)) & w0 & high;  // lanes holding FF
-            if (ff == 0) {  // 16 positions without a start byte end the step
-                i += word;
-                if (empty) break;
-                empty = true;
-                continue;
-            }
-            empty = false;
-            // a lane of z is 0 where ST2, EN1 and EN2 follow
-            const word_t z =
-                (load(p + i + 1) ^ lanes(start2)) | (load(p + i + 8) ^ lanes(end1)) | (load(p + i + 9) ^ lanes(end2));
-            const word_t hit = ff & ~(((z & low7) + low7) | z);  // lanes where a frame starts
-            if (hit == 0) {
-                false_starts_ += count(ff);
-                i += word;
-                continue;
-            }
-            const std::size_t k = first_lane(hit);
-            if (k == 0 && reported && i == mark) break;  // frames back to back: the caller's loop takes them
-            false_starts_ += count(ff & before(k));
-            i += k;
-            skipped_ += i - mark;
-            ++frames_;
-            on_frame(frame_bytes(p + i, frame_size));
-            i += frame_size;
-            mark = i;
-            reported = true;
-        }
-        skipped_ += i - mark;
-        return i;
-    }
-    // 8 bytes in host order (lane k: the byte at p + k).
-    static constexpr word_t load(const std::uint8_t* p) noexcept {
-        word_t w = 0;
-        if (ROBOWIRE_CONSTANT_EVALUATED()) {
-            for (std::size_t k = 0; k < word; ++k)
-                w |= word_t{p[k]} << (std::endian::native == std::endian::little ? 8 * k : 56 - 8 * k);
-        } else {
-            std::memcpy(&w, p, sizeof w);
-        }
-        return w;
-    }
-    // Lanes are marked by their high bit.
-    static constexpr std::size_t first_lane(word_t m) noexcept {
-        return static_cast<std::size_t>(std::endian::native == std::endian::little ? std::countr_zero(m)
-                                                                                   : std::countl_zero(m)) /
-               8;
-    }
-    static constexpr word_t before(std::size_t k) noexcept {  // the lanes before lane k
-        return std::endian::native == std::endian::little ? (word_t{1} << (8 * k)) - 1 : ~(~word_t{0} >> (8 * k));
-    }
-    static constexpr std::uint64_t count(word_t m) noexcept { return ((m >> 7) * lanes(1)) >> 56; }
 
     // Can the partial candidate (shorter than a frame, starting with ST1)
     // still become a frame: its ST2 and EN1, where it has them.
