@@ -135,7 +135,7 @@ private:
                 std::uint64_t ok =
                     s & (equal_mask<16>(p + base, start2) >> (from + 1) | std::uint64_t{1} << (15 - from));
                 if (p[n - 1] != end1) ok &= ~(std::uint64_t{1} << 7 >> from);  // at last, EN1 is there too
-                false_starts_ += popcount(ok != 0 ? s & ((std::uint64_t{1} << first_bit(ok)) - 1) : s);
+                false_starts_ += bits9[ok != 0 ? s & ((std::uint64_t{1} << first_bit(ok)) - 1) : s];
                 if (ok != 0) at = i + first_bit(ok);
             }
         } else {
@@ -166,8 +166,8 @@ private:
     // to go on from): the first frame there is reported with those after it,
     // the start bytes before it are false starts. Returns where to go on.
     template <std::size_t W, class OnFrame>
-    constexpr std::size_t block(const std::uint8_t* p, std::size_t base, std::uint64_t s, std::size_t last,
-                                std::size_t& mark, OnFrame& on_frame) {
+    ROBOWIRE_ALWAYS_INLINE constexpr std::size_t block(const std::uint8_t* p, std::size_t base, std::uint64_t s,
+                                                       std::size_t last, std::size_t& mark, OnFrame& on_frame) {
         if (s == 0) return base + W;
         std::size_t k = first_bit(s);
         if (!frame_at(p + base + k)) {
@@ -176,9 +176,12 @@ private:
                 return base + W;
             }
             const std::uint64_t f = frames_mask<W>(p + base) & s;
-            false_starts_ += popcount(f != 0 ? s & ((std::uint64_t{1} << first_bit(f)) - 1) : s);
-            if (f == 0) return base + W;
+            if (f == 0) {
+                false_starts_ += popcount(s);
+                return base + W;
+            }
             k = first_bit(f);
+            false_starts_ += popcount(s & ((std::uint64_t{1} << k) - 1));
         }
         return frames_from(p, base + k, last, mark, on_frame);
     }
@@ -288,6 +291,11 @@ private:
         x = (x & lanes(0x33)) + ((x >> 2) & lanes(0x33));
         return ((x + (x >> 4)) & lanes(0x0F)) * lanes(1) >> 56;
     }
+    static constexpr std::array<std::uint8_t, 512> bits9 = [] {  // bits set in each 9-bit value
+        std::array<std::uint8_t, 512> t{};
+        for (std::size_t v = 1; v < 512; ++v) t[v] = static_cast<std::uint8_t>(t[v & (v - 1)] + 1);
+        return t;
+    }();
     static constexpr std::size_t first_bit(std::uint64_t m) noexcept {
         return static_cast<std::size_t>(std::countr_zero(m));
     }
