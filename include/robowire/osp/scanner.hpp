@@ -65,8 +65,9 @@ public:
             else ++skipped_;
             return;
         }
-        const std::size_t k = len_++;
+        const std::size_t k = len_;
         buf_[k] = b;
+        len_ = k + 1;               // after the byte: not reloaded below
         if (k == frame_size - 1) {  // earlier positions were checked as they came
             if (b == end2) {
                 len_ = 0;
@@ -75,7 +76,9 @@ public:
             } else {
                 resync();  // leaves a shorter candidate: never a whole frame
             }
-        } else if ((k == 1 && b != start2) || (k == 8 && b != end1)) {
+        } else if (k == 1) {
+            if (b != start2) resync();
+        } else if (k == 8 && b != end1) {
             resync();
         }
     }
