@@ -113,8 +113,8 @@ private:
                 i = block<16>(p, i, equal_mask<16>(p + i, start1), last, mark, on_frame);
             } else if (n >= 25) {  // the 16 positions that end at last, those before i dropped
                 const std::size_t base = last - 16;
-                i = block<16>(p, base, equal_mask<16>(p + base, start1) >> (i - base) << (i - base), last, mark,
-                              on_frame);
+                i = block<16, false>(p, base, equal_mask<16>(p + base, start1) >> (i - base) << (i - base), last, mark,
+                                     on_frame);
             } else if (p[i] != start1) {
                 ++i;
             } else if (frame_at(p + i)) {
@@ -168,7 +168,7 @@ private:
     // The start bytes s of positions [base, base + W) (none before the one
     // to go on from): the first frame there is reported with those after it,
     // the start bytes before it are false starts. Returns where to go on.
-    template <std::size_t W, class OnFrame>
+    template <std::size_t W, bool All = true, class OnFrame>  // All: s holds every start byte there
     ROBOWIRE_ALWAYS_INLINE constexpr std::size_t block(const std::uint8_t* p, std::size_t base, std::uint64_t s,
                                                        std::size_t last, std::size_t& mark, OnFrame& on_frame) {
         if (s == 0) return base + W;
@@ -180,7 +180,7 @@ private:
             }
             const std::uint64_t f = frames_mask<W>(p + base) & s;
             if (f == 0) {
-                false_starts_ += popcount(s);
+                false_starts_ += All ? count_starts<W>(p + base, s) : popcount(s);
                 return base + W;
             }
             k = first_bit(f);
@@ -244,6 +244,18 @@ private:
 #endif
         return equal_mask<W>(p, start1) & equal_mask<W>(p + 1, start2) & equal_mask<W>(p + 8, end1) &
                equal_mask<W>(p + 9, end2);
+    }
+    template <std::size_t W>  // the bits of s, the start bytes of p[0, W)
+    static constexpr std::uint64_t count_starts([[maybe_unused]] const std::uint8_t* p, std::uint64_t s) noexcept {
+#if ROBOWIRE_SSE2
+        if (!ROBOWIRE_CONSTANT_EVALUATED()) {
+            v16 t{};  // lane k: the start bytes at p[k + 16 j]
+            for (std::size_t k = 0; k < W; k += 16) t -= (v16)(load16(p + k) == start1);
+            const auto sums = __builtin_ia32_psadbw128((c16)t, c16{});
+            return static_cast<std::uint64_t>(sums[0] + sums[1]);
+        }
+#endif
+        return popcount(s);
     }
     static constexpr std::uint64_t starts64(const std::uint8_t* p) noexcept {
 #if ROBOWIRE_SSE2  // start1 is 0xFF, the largest byte: none in the 64 if none in their maximum
