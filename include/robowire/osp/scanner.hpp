@@ -126,29 +126,31 @@ private:
         }
         // The last 9 positions (and those of a frame that ends in them): the
         // first candidate that can still become a frame is held.
-        std::size_t at = n;  // the held candidate, or n
-        if (i < n && p[i] == start1 && tail_ok(p, i, n)) {
-            at = i;
-        } else if (i < n && n >= 16) {  // masks of the last 16 bytes: start bytes, and those followed by ST2
+        const auto hold = [&](std::size_t at) {
+            len_ = n - at;
+            codec::copy_small(buf_.data(), p + at, n - at);
+            skipped_ += at - mark;
+        };
+        if (i < n && p[i] == start1 && tail_ok(p, i, n)) return hold(i);
+        if (i < n && n >= 16) {  // masks of the last 16 bytes: start bytes, and those followed by ST2
             const std::size_t base = n - 16, from = i - base;                  // from: 7 or more
             const std::uint64_t s = equal_mask<16>(p + base, start1) >> from;  // 9 bits at most
-            if (s != 0 && tail_ok(p, i + first_bit(s), n)) {
-                at = i + first_bit(s);
-            } else if (s != 0) {
+            if (s != 0 && tail_ok(p, i + first_bit(s), n)) return hold(i + first_bit(s));
+            if (s != 0) {
                 std::uint64_t ok =
                     s & (equal_mask<16>(p + base, start2) >> (from + 1) | std::uint64_t{1} << (15 - from));
                 if (p[n - 1] != end1) ok &= ~(std::uint64_t{1} << 7 >> from);  // at last, EN1 is there too
                 false_starts_ += bits9[ok != 0 ? s & ((std::uint64_t{1} << first_bit(ok)) - 1) : s];
-                if (ok != 0) at = i + first_bit(ok);
+                if (ok != 0) return hold(i + first_bit(ok));
             }
         } else {
-            for (at = i; at < n && (p[at] != start1 || !tail_ok(p, at, n)); ++at) false_starts_ += p[at] == start1;
+            for (; i < n; ++i) {
+                if (p[i] != start1) continue;
+                if (tail_ok(p, i, n)) return hold(i);
+                ++false_starts_;
+            }
         }
-        if (at < n) {
-            len_ = n - at;
-            codec::copy_small(buf_.data(), p + at, n - at);
-        }
-        skipped_ += at - mark;
+        skipped_ += n - mark;
     }
 
     // Frames back to back from the start byte at p[i], one check each; the
