@@ -355,3 +355,31 @@ TEST_CASE("scanner: dense streams match the reference and its counters, any chun
         }
     }
 }
+
+namespace {
+// 70 x FF, then a frame: feeds it in chunks; {frames seen, frames(), false_starts(), skipped()}.
+constexpr std::array<std::uint64_t, 4> after_70_starts(std::size_t chunk) {
+    std::array<std::uint8_t, 80> s{};
+    for (std::size_t k = 0; k < 70; ++k) s[k] = 0xFF;
+    const frame10 f{0xFF, 0xAA, 0x02, 0x11, 0x00, 0x00, 0x00, 0x00, 0x55, 0x77};
+    for (std::size_t k = 0; k < 10; ++k) s[70 + k] = f[k];
+    scanner sc;
+    std::uint64_t n = 0;
+    for (std::size_t i = 0; i < s.size(); i += chunk)
+        sc.feed(std::span<const std::uint8_t>(s).subspan(i, std::min(chunk, s.size() - i)),
+                [&](scanner::frame_bytes) { ++n; });
+    return {n, sc.frames(), sc.false_starts(), sc.skipped()};
+}
+}  // namespace
+
+TEST_CASE("scanner: a frame after 70 start bytes, masks at compile and run time", "[osp][scanner]") {
+    // each FF before the frame is followed by FF, not AA: 70 false starts, 70 bytes skipped.
+    // 80: one chunk (a 64-position block, then the last 16); 75: the frame held across chunks.
+    constexpr std::array<std::uint64_t, 4> golden{1, 1, 70, 70};
+    STATIC_REQUIRE(after_70_starts(80) == golden);
+    STATIC_REQUIRE(after_70_starts(75) == golden);
+    for (std::size_t chunk : {1u, 16u, 64u, 75u, 80u}) {
+        INFO("chunk " << chunk);
+        CHECK(after_70_starts(chunk) == golden);
+    }
+}
