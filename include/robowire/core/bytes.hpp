@@ -139,6 +139,10 @@ public:
         return a.size_ == b.size() && detail::same_bytes(a.data(), b.data(), b.size());
     }
 
+    // A bytes<N> lies as its size (one byte), then its N bytes: an encoder may
+    // write the size and the first bytes as one word.
+    static constexpr bool size_byte_then_data() noexcept;
+
 private:
     // The smallest type that holds N and one value more (a result's error mark).
     using size_type =
@@ -152,6 +156,10 @@ private:
     friend struct detail::niche<bytes>;
 };
 
+template <std::size_t N>
+constexpr bool bytes<N>::size_byte_then_data() noexcept {
+    return sizeof(size_type) == 1 && sizeof(bytes) == N + 1 && offsetof(bytes, data_) == 1;
+}
 template <std::size_t N>
 constexpr void codec::set_written_size(bytes<N>& b, std::size_t n) noexcept {
     b.size_ = static_cast<typename bytes<N>::size_type>(n);

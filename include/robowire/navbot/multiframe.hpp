@@ -36,12 +36,7 @@ class basic_fragmenter {
     // A bytes<20> is its size (one byte), then its bytes, and words are
     // little-endian: a frame's size and first bytes are stored as one word.
     static constexpr bool head_fits() noexcept {
-        if constexpr (sizeof(bytes<frame_size>) != frame_size + 1 || std::endian::native != std::endian::little) {
-            return false;
-        } else {
-            const auto b = std::bit_cast<std::array<std::uint8_t, frame_size + 1>>(bytes<frame_size>{header1});
-            return b[0] == 1 && b[1] == header1 && b[2] == 0;
-        }
+        return std::endian::native == std::endian::little && bytes<frame_size>::size_byte_then_data();
     }
     static constexpr bool head_store = !ROBOWIRE_OPTIMIZE_SIZE && head_fits();
 
@@ -183,13 +178,18 @@ private:
 using fragmenter = basic_fragmenter<std::uint8_t>;
 using text_fragmenter = basic_fragmenter<char>;
 
-// Frames of a binary payload (e.g. command::wifi).
-constexpr result<fragmenter> make_frames(std::uint8_t command, std::span<const std::uint8_t> payload) noexcept {
-    return fragmenter::make(command, payload);
+// Frames of a binary payload (e.g. command::wifi): a result<fragmenter>.
+// (Templates: a file that includes this header but makes no frames
+// instantiates no fragmenter.)
+template <class Deferred = void>
+constexpr auto make_frames(std::uint8_t command, std::span<const std::uint8_t> payload) noexcept {
+    return codec::deferred_t<fragmenter, Deferred>::make(command, payload);
 }
-// Frames of a JSON request (command 0x02). The text is sent as is (no NUL).
-constexpr result<text_fragmenter> json_frames(std::string_view text) noexcept {
-    return text_fragmenter::make(command::json, {text.data(), text.size()});
+// Frames of a JSON request (command 0x02), a result<text_fragmenter>. The
+// text is sent as is (no NUL).
+template <class Deferred = void>
+constexpr auto json_frames(std::string_view text) noexcept {
+    return codec::deferred_t<text_fragmenter, Deferred>::make(command::json, {text.data(), text.size()});
 }
 }  // namespace ROBOWIRE_MODE_NAMESPACE
 
@@ -415,7 +415,7 @@ private:
         if (now_.last == kept::stored) return f == last_;
         if constexpr (ROBOWIRE_OPTIMIZE_SIZE) return false;
         return now_.last == kept::appended && f.command == now_.command && f.remaining == now_.last_remaining &&
-               detail::same_bytes(f.payload.data(), buf_.data() + size_ - payload_size, payload_size);
+               equal_bytes(f.payload, std::span<const std::uint8_t>(buf_.data() + size_ - payload_size, payload_size));
     }
     // Drops the message; the last frame appended, if remembered, is copied to last_.
     constexpr void drop() noexcept {
