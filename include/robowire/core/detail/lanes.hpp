@@ -1,8 +1,10 @@
 // robowire/core/detail/lanes.hpp - internal: the range checks of a message's
-// one-byte fields as one vector test (ROBOWIRE_SSE2, not under
-// ROBOWIRE_OPTIMIZE_SIZE). A byte is valid when (byte - lo) mod 256 <= width;
-// the fields' bytes are loaded as 8 or 16 lanes and tested at once. A failed
-// test is followed by the exact checks, which find the first error.
+// one-byte fields (and fixed bytes the load holds) as one vector test, flag
+// bytes as one word test (ROBOWIRE_SSE2, not under ROBOWIRE_OPTIMIZE_SIZE),
+// sparse one-byte enums by a table. A byte is valid when
+// (byte - lo) mod 256 <= width; the fields' bytes are loaded as 8 or 16
+// lanes and tested at once. A failed test is followed by the exact checks,
+// which find the first error.
 #pragma once
 
 #include "../config.hpp"  // first: the C++ version check
@@ -20,10 +22,8 @@
 
 namespace robowire::detail {
 
-// A field of shape S valid in [Min, Max] as lanes: each of its bytes valid
-// when (byte - lo) mod 256 <= width. ok: every check it has is that test (or
-// it has none: checked false). T: the type its range is checked in (the
-// member's for encode, the wire's for decode); shared by fields alike.
+// A field as lanes: each of its bytes valid when (byte - lo) mod 256 <=
+// width. ok: every check it has is that test (or it has none: checked false).
 struct byte_lanes {
     bool ok = false, checked = false;
     std::uint8_t lo = 0, width = 255;
@@ -31,8 +31,9 @@ struct byte_lanes {
     std::size_t off = 0;  // wire offset
 };
 // What a field's shape S says: one-byte elements whose checks are a range
-// (the table's, within [tmin, tmax], the type they are checked in; an enum's
-// run of codes: fixed, in [lo, hi]).
+// (the table's, within [tmin, tmax], the type they are checked in: the
+// member's for encode (Member), the wire's for decode; an enum's run of
+// codes: fixed, in [lo, hi]).
 struct lane_shape {
     bool ok = false, fixed = false;
     std::int64_t tmin = 0, tmax = 0, lo = 0, hi = 0;
