@@ -140,7 +140,8 @@ private:
                 std::uint64_t ok =
                     s & (equal_mask<16>(p + base, start2) >> (from + 1) | std::uint64_t{1} << (15 - from));
                 if (p[n - 1] != end1) ok &= ~(std::uint64_t{1} << 7 >> from);  // at last, EN1 is there too
-                false_starts_ += bits9<>[ok != 0 ? s & ((std::uint64_t{1} << first_bit(ok)) - 1) : s];
+                false_starts_ +=
+                    bits9<>[static_cast<std::size_t>(ok != 0 ? s & ((std::uint64_t{1} << first_bit(ok)) - 1) : s)];
                 if (ok != 0) return hold(i + first_bit(ok));
             }
         } else {
