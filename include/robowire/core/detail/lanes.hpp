@@ -337,7 +337,7 @@ template <const lane_plan& P, std::size_t W = 0>
 ROBOWIRE_ALWAYS_INLINE bool plan_valid(const unsigned char* p, std::size_t base) noexcept {
     constexpr const lane_window& w = P.win[W];
     if constexpr (w.loads != 0)
-        if (!lanes_valid<P, W>(p + (base + w.at[0]), p + (base + w.at[1]))) return false;
+        if (!lanes_valid<P, W>(p + (base + w.at[0]), w.loads == 2 ? p + (base + w.at[1]) : nullptr)) return false;
     return words_valid<P>(p, base, std::make_index_sequence<P.words>{});
 }
 // The window of P whose loads stay within an object of `size` bytes at
