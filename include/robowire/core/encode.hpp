@@ -24,6 +24,54 @@ ROBOWIRE_COLD constexpr error field_error(const M& m) noexcept {
     (void)check_record<M>(m, 0, err, std::make_index_sequence<field_count_v<M>>{});
     return err;
 }
+// Sets an encoder's `written`: a size, or a bytes<N>'s size.
+constexpr void set_written(std::size_t& written, std::size_t n) noexcept { written = n; }
+template <std::size_t N>
+constexpr void set_written(bytes<N>& written, std::size_t n) noexcept {
+    codec::set_written_size(written, n);
+}
+#if ROBOWIRE_SSE2
+// The window of M's encode plan that m's loads use (plan_fits: 0 or 1), when
+// its members lie as their wire bytes, base bytes on; else 2. (Constants
+// once inlined.)
+template <described M>
+ROBOWIRE_ALWAYS_INLINE std::size_t member_window(const M& m, std::size_t& base) noexcept {
+    constexpr const lane_plan& p = lanes_v<M, true>;
+    const auto obj = reinterpret_cast<const unsigned char*>(&m);
+    base = offset_in(obj, &(m.*(field_v<M, p.anchor>.member))) - p.first;
+    const std::size_t w = plan_fits(p, base, sizeof(M));
+    return w < 2 && members_as_wire<M, p>(m, base, std::make_index_sequence<field_count_v<M>>{}) ? w : 2;
+}
+// The D offset of the output's first wire byte (image_of): 1 for a bytes<N>
+// (its size byte first), written through its object.
+template <class Written>
+inline constexpr std::size_t lead_v = 0;
+template <std::size_t N>
+inline constexpr std::size_t lead_v<bytes<N>> = bytes<N>::size_byte_then_data() ? 1 : 0;
+// encode_into for a message whose frame is image_v<M, W, Lead>: the test,
+// then the frame from the test's register.
+template <described M, std::size_t W, std::size_t Lead, class Written>
+ROBOWIRE_ALWAYS_INLINE error encode_image(const M& m, std::size_t base, std::uint8_t* out_data, std::size_t out_size,
+                                          Written& written) noexcept {
+    constexpr const lane_plan& p = lanes_v<M, true>;
+    constexpr const lane_window& win = p.win[W];
+    const auto obj = reinterpret_cast<const unsigned char*>(&m);
+    lane_bytes x;
+    if constexpr (win.loads == 2) x = lanes_load<p, W>(obj + (base + win.at[0]), obj + (base + win.at[1]));
+    else x = lanes_load<p, W>(obj + (base + win.at[0]), nullptr);
+    if (!lanes_test<p, W>(x)) [[unlikely]]
+        return field_error(m);
+    if (max_size_v < M >> out_size) return codec::fail_at(errc::buffer_too_small, max_size_v<M>);
+    constexpr auto lanes = std::make_index_sequence<16>{};
+    if constexpr (Lead != 0) {  // the size byte in the image: out_data is written.data()
+        store_image<image_v<M, W, Lead>>(reinterpret_cast<unsigned char*>(&written), x, lanes);
+    } else {
+        store_image<image_v<M, W, Lead>>(out_data, x, lanes);
+        set_written(written, max_size_v<M>);
+    }
+    return error{};
+}
+#endif
 }  // namespace detail::inline ROBOWIRE_MODE_NAMESPACE
 
 namespace codec::inline ROBOWIRE_MODE_NAMESPACE {
@@ -48,11 +96,9 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_fields(const M& m, error& err) noexc
                 if (!ROBOWIRE_CONSTANT_EVALUATED()) {
                     constexpr const detail::lane_plan& p = detail::lanes_v<M, true>;
                     const auto obj = reinterpret_cast<const unsigned char*>(&m);
-                    // members at object offset base + wire offset? (constants once inlined)
-                    const std::size_t base =
-                        detail::offset_in(obj, &(m.*(detail::field_v<M, p.anchor>.member))) - p.first;
-                    const std::size_t w = detail::plan_fits(p, base, sizeof(M));
-                    if (w < 2 && detail::members_as_wire<M, p>(m, base, fields)) {
+                    std::size_t base = 0;
+                    const std::size_t w = detail::member_window(m, base);
+                    if (w < 2) {
                         bool valid = false;
                         if constexpr (p.win[1].loads != 0)
                             valid = w == 0 ? detail::plan_valid<p, 0>(obj, base) : detail::plan_valid<p, 1>(obj, base);
@@ -89,13 +135,23 @@ namespace detail::inline ROBOWIRE_MODE_NAMESPACE {
 // error, if any, is returned in a register and the output is left unchanged.
 // Pointer and size, not a span: a span passed on by value from an inlined
 // caller is copied through the stack first.
-constexpr void set_written(std::size_t& written, std::size_t n) noexcept { written = n; }
-template <std::size_t N>
-constexpr void set_written(bytes<N>& written, std::size_t n) noexcept {
-    codec::set_written_size(written, n);
-}
 template <described M, class Written>
 constexpr error encode_into(const M& m, std::uint8_t* out_data, std::size_t out_size, Written& written) noexcept {
+#if ROBOWIRE_SSE2
+    if constexpr (!ROBOWIRE_OPTIMIZE_SIZE && field_count_v<M> >= lanes_min_fields && min_size_v<M> == max_size_v<M>) {
+        if constexpr (lanes_v<M, true>.use &&
+                      (image_v<M, 0, lead_v<Written>>.use || image_v<M, 1, lead_v<Written>>.use)) {
+            if (!ROBOWIRE_CONSTANT_EVALUATED()) {  // the frame from the test's register
+                std::size_t base = 0;
+                const std::size_t w = member_window(m, base);
+                if constexpr (image_v<M, 0, lead_v<Written>>.use)
+                    if (w == 0) return encode_image<M, 0, lead_v<Written>>(m, base, out_data, out_size, written);
+                if constexpr (image_v<M, 1, lead_v<Written>>.use)
+                    if (w == 1) return encode_image<M, 1, lead_v<Written>>(m, base, out_data, out_size, written);
+            }
+        }
+    }
+#endif
     const std::span<std::uint8_t> out(out_data, out_size);
     constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
     auto size = encoded_size(m, fields);

@@ -84,7 +84,11 @@ constexpr byte_lanes lanes_of(const lane_shape& s, std::int64_t min, std::int64_
 // and its constants per lane.
 struct lane_window {
     std::size_t at[2] = {0, 0};  // wire offsets of the loads
-    unsigned loads = 0;          // 0: none; 1: 8 bytes at at[0]; 2: 8 at at[0], 8 at at[1]; 16: 16 at at[0]
+    // 0: none; 1: 8 bytes at at[0]; 16: 16 at at[0]; 2: 8 at at[0], then `tail` bytes (1, 2, 4
+    // or 8) at at[1] ending at the last byte tested: lane k holds wire byte at[0] + k, lanes
+    // past the last byte hold 0
+    unsigned loads = 0;
+    unsigned tail = 0;
     // lane k valid: (signed char)(byte + add[k]) <= lim[k], that is byte - lo in [0, width]
     // (add = 0x80 - lo, lim = width - 0x80); a lane with no test: add 0, lim 127
     alignas(16) std::uint8_t add[16] = {};
@@ -178,11 +182,15 @@ constexpr lane_plan plan_lanes(const byte_lanes* f, const std::size_t* count, st
         w.loads = loads;
         w.at[0] = at0;
         w.at[1] = at1;
+        if (loads == 2) {  // the bytes after the first 8, up to `last`, in the smallest load
+            const std::size_t more = last + 1 - (at0 + 8);
+            w.tail = more <= 1 ? 1 : more <= 2 ? 2 : more <= 4 ? 4 : 8;
+            w.at[1] = last + 1 - w.tail;
+        }
         for (std::size_t i = 0; i < n; ++i)
             if ((p.covered >> i & 1) && f[i].checked && in_window(i, p.first))
                 for (std::size_t b = f[i].off; b < f[i].off + count[i]; ++b) {
-                    // lane of wire byte b; a byte both halves hold is tested in the first
-                    const std::size_t lane = loads == 2 && b >= at0 + 8 ? 8 + (b - at1) : b - at0;
+                    const std::size_t lane = b - at0;
                     w.add[lane] = static_cast<std::uint8_t>(0x80 - f[i].lo);
                     w.lim[lane] = static_cast<std::int8_t>(f[i].width - 0x80);
                 }
@@ -207,7 +215,7 @@ constexpr lane_plan plan_lanes(const byte_lanes* f, const std::size_t* count, st
         p.fixed_in = all;
     };
     if (best_loads == 16) place(16);
-    else if (best_loads == 2) fill(p.win[0], 2, p.first, last - 7);
+    else if (best_loads == 2) fill(p.win[0], 2, p.first, 0);
     else if (best_loads == 1 && limit != 0) place(8);
     else if (best_loads == 1) fill(p.win[0], 1, p.first, 0), fill(p.win[1], 1, last >= 7 ? last - 7 : 0, 0);
     if (limit == 0) {  // encode: a load reads only bytes of fields whose members are their wire bytes
@@ -225,7 +233,7 @@ constexpr lane_plan plan_lanes(const byte_lanes* f, const std::size_t* count, st
             return all;
         };
         const auto window_held = [&](const lane_window& w, bool mark) {
-            return w.loads == 0 || (held(w.at[0], 8, mark) && (w.loads != 2 || held(w.at[1], 8, mark)));
+            return w.loads == 0 || (held(w.at[0], 8, mark) && (w.loads != 2 || held(w.at[1], w.tail, mark)));
         };
         if (!window_held(p.win[1], false)) p.win[1] = lane_window{};
         if (!window_held(p.win[0], false)) p.win[0] = p.win[1], p.win[1] = lane_window{};
@@ -304,32 +312,60 @@ ROBOWIRE_ALWAYS_INLINE bool words_valid(const unsigned char* p, std::size_t base
 #pragma GCC diagnostic push  // g++ 12 warns of the load of a window that the caller's test (plan_fits) rules out
 #pragma GCC diagnostic ignored "-Warray-bounds"
 #endif
-// The test: every lane of the bytes at a (and b) valid. SSE2, through the
-// compilers' vector types (no intrinsics header).
+using lane_bytes = unsigned char __attribute__((vector_size(16)));  // SSE2 register, through vector types
+// Window W's lanes: the bytes at a (and b), lane k holding wire byte at[0] + k.
 template <const lane_plan& Plan, std::size_t W>
-ROBOWIRE_ALWAYS_INLINE bool lanes_valid(const unsigned char* a, const unsigned char* b) noexcept {
+ROBOWIRE_ALWAYS_INLINE lane_bytes lanes_load(const unsigned char* a, const unsigned char* b) noexcept {
     constexpr const lane_window& P = Plan.win[W];
-    using v16 = unsigned char __attribute__((vector_size(16)));
     using u64x2 = unsigned long long __attribute__((vector_size(16)));
-    using c16 = signed char __attribute__((vector_size(16)));
-    v16 x;
+    lane_bytes x;
+    (void)b;
     if constexpr (P.loads == 16) {
         std::memcpy(&x, a, 16);
     } else {
         unsigned long long lo = 0, hi = 0;
         std::memcpy(&lo, a, 8);
-        if constexpr (P.loads == 2) std::memcpy(&hi, b, 8);
-        x = reinterpret_cast<v16>(u64x2{lo, hi});
+        if constexpr (P.loads == 2) {  // the tail's bytes from lane 8 on (its load ends at the last byte)
+            constexpr unsigned drop = 8 * (P.tail - (P.at[1] + P.tail - P.at[0] - 8));
+            if constexpr (P.tail == 2) {  // pinsrw
+                using u16x8 = unsigned short __attribute__((vector_size(16)));
+                std::uint16_t t;
+                std::memcpy(&t, b, 2);
+                u16x8 h = reinterpret_cast<u16x8>(u64x2{lo, 0});
+                h[4] = t;
+                return reinterpret_cast<lane_bytes>(h);
+            } else if constexpr (P.tail == 1) {
+                hi = *b;
+            } else if constexpr (P.tail == 4) {
+                std::uint32_t t;
+                std::memcpy(&t, b, 4);
+                hi = t >> drop;
+            } else {
+                std::memcpy(&hi, b, 8);
+                hi >>= drop;
+            }
+        }
+        x = reinterpret_cast<lane_bytes>(u64x2{lo, hi});
     }
+    return x;
+}
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
 #endif
-    (void)b;
-    v16 add;
+// The test of window W's lanes x: each valid.
+template <const lane_plan& Plan, std::size_t W>
+ROBOWIRE_ALWAYS_INLINE bool lanes_test(lane_bytes x) noexcept {
+    constexpr const lane_window& P = Plan.win[W];
+    using c16 = signed char __attribute__((vector_size(16)));
+    lane_bytes add;
     c16 lim;
     std::memcpy(&add, P.add, 16);
     std::memcpy(&lim, P.lim, 16);
     return __builtin_ia32_pmovmskb128(reinterpret_cast<c16>(x + add) > lim) == 0;
+}
+template <const lane_plan& Plan, std::size_t W>
+ROBOWIRE_ALWAYS_INLINE bool lanes_valid(const unsigned char* a, const unsigned char* b) noexcept {
+    return lanes_test<Plan, W>(lanes_load<Plan, W>(a, b));
 }
 // Every test of P on the bytes at p + base + wire offset, its vector test
 // with window W (plan_fits).
@@ -350,9 +386,101 @@ constexpr std::size_t plan_fits(const lane_plan& p, std::size_t base, std::size_
     for (std::size_t k = 0; k < 2 && words; ++k) {
         const lane_window& w = p.win[k];
         if (k == 1 && w.loads == 0) break;
-        if (w.loads == 0 || (fits(w.at[0], w.loads == 16 ? 16 : 8) && (w.loads != 2 || fits(w.at[1], 8)))) return k;
+        if (w.loads == 0 || (fits(w.at[0], w.loads == 16 ? 16 : 8) && (w.loads != 2 || fits(w.at[1], w.tail))))
+            return k;
     }
     return 2;
+}
+#endif
+
+// Encode of a message whose every field is a lane of window W's register
+// (one-byte fields whose members lie as their wire bytes): the frame built
+// from that register. D: the output, the size byte first when `lead`, then
+// the wire bytes (`size`, 16 to 32 bytes with it). Stores: the constant words
+// first (fixed bytes, zeros, the size), then the register moved up `shift`
+// lanes (k or-ed in) as 16 bytes at D offset `at`; the words may reach into
+// those 16 bytes, which the last store overwrites.
+struct frame_image {
+    bool use = false;
+    std::size_t at = 0;
+    unsigned shift = 0;
+    bool add = false;
+    alignas(16) std::uint8_t k[16] = {};
+    std::size_t words = 0;
+    std::size_t word_at[4] = {};
+    unsigned word_size[4] = {};
+    std::uint64_t word[4] = {};
+};
+template <class = void>  // compiled where used
+constexpr frame_image image_of(const lane_plan& p, std::size_t w, std::size_t lead, std::size_t size,
+                               const fixed_byte* fixed, std::size_t fixed_n, std::size_t n) noexcept {
+    frame_image r{};
+    const lane_window& win = p.win[w];
+    const std::size_t len = win.loads == 2 ? win.at[1] + win.tail - win.at[0] : 8;  // lanes loaded
+    const std::size_t d_size = lead + size, f0 = lead + win.at[0];
+    const bool all = n < 64 && p.covered == (std::uint64_t{1} << n) - 1;
+    if (!p.use || !all || p.words != 0 || (win.loads != 1 && win.loads != 2) || d_size < 16 || d_size > 32 ||
+        f0 + len > d_size)
+        return r;
+    std::uint8_t c[32] = {};  // the frame, 0 at the fields' bytes
+    if (lead) c[0] = static_cast<std::uint8_t>(size);
+    for (std::size_t k = 0; k < fixed_n; ++k) {
+        if (lead + fixed[k].offset >= f0 && lead + fixed[k].offset < f0 + len) return r;  // (never: lanes are fields)
+        c[lead + fixed[k].offset] = fixed[k].value;
+    }
+    const std::size_t lo = f0 + len > 16 ? f0 + len - 16 : 0, hi = f0 < d_size - 16 ? f0 : d_size - 16;
+    if (lo > hi) return r;
+    r.at = hi;
+    for (std::size_t at = hi + 1; at-- > lo;) {  // a store needing no OR, the last first
+        bool zero = true;
+        for (std::size_t j = at; j < at + 16; ++j) zero = zero && c[j] == 0;
+        if (zero) {
+            r.at = at;
+            break;
+        }
+    }
+    r.shift = static_cast<unsigned>(f0 - r.at);
+    for (std::size_t j = 0; j < 16; ++j) r.add = (r.k[j] = c[r.at + j]) != 0 || r.add;
+    const auto cover = [&](std::size_t u, std::size_t v) {  // [u, v) by words of 1, 2, 4 or 8 bytes
+        while (u < v && r.words < 4) {
+            const std::size_t left = v - u, wd = left > 4 ? 8 : left > 2 ? 4 : left;
+            const std::size_t at = u + wd <= d_size ? u : d_size - wd;
+            std::uint64_t word = 0;
+            for (std::size_t j = wd; j-- > 0;) word = word << 8 | c[at + j];
+            r.word_at[r.words] = at, r.word_size[r.words] = static_cast<unsigned>(wd), r.word[r.words++] = word;
+            u = at + wd;
+        }
+        return u >= v;
+    };
+    r.use = cover(0, r.at) && cover(r.at + 16, d_size);
+    return r;
+}
+template <class M, std::size_t W, std::size_t Lead>
+inline constexpr frame_image image_v = image_of(lanes_v<M, true>, W, Lead, max_size_v<M>, table_v<M>.fixed.data(),
+                                                fixed_count_v<M>, field_count_v<M>);
+#if ROBOWIRE_SSE2
+// Writes image I with the register x (window W's lanes) to d.
+template <const frame_image& I, std::size_t... J>
+ROBOWIRE_ALWAYS_INLINE void store_image(unsigned char* d, lane_bytes x, std::index_sequence<J...>) noexcept {
+    for (std::size_t k = 0; k < I.words; ++k) {  // unrolled: constants
+        if (I.word_size[k] == 8) std::memcpy(d + I.word_at[k], &I.word[k], 8);
+        else if (I.word_size[k] == 4) {
+            const auto v = static_cast<std::uint32_t>(I.word[k]);
+            std::memcpy(d + I.word_at[k], &v, 4);
+        } else if (I.word_size[k] == 2) {
+            const auto v = static_cast<std::uint16_t>(I.word[k]);
+            std::memcpy(d + I.word_at[k], &v, 2);
+        } else {
+            d[I.word_at[k]] = static_cast<unsigned char>(I.word[k]);
+        }
+    }
+    lane_bytes y = __builtin_shufflevector(x, lane_bytes{}, (J >= I.shift ? J - I.shift : 16 + J)...);  // pslldq
+    if constexpr (I.add) {
+        lane_bytes k;
+        std::memcpy(&k, I.k, 16);
+        y |= k;
+    }
+    std::memcpy(d + I.at, &y, 16);
 }
 #endif
 
