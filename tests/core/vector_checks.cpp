@@ -165,6 +165,23 @@ constexpr auto table_of(std::type_identity<tele9>) {
     t.declared_size = 15;
     return t;
 }
+// One-byte fields whose members lie in the reverse order: neither the
+// register image of decode nor encode's applies (their members are checked).
+struct backwards {
+    std::uint8_t c = 0;
+    std::int8_t b = 0;
+    std::uint8_t a = 0;
+    friend constexpr bool operator==(const backwards&, const backwards&) = default;
+};
+constexpr auto table_of(std::type_identity<backwards>) {
+    using namespace robowire;
+    auto t = make_table<backwards>("backwards", {{0, 0x3C, errc::bad_header}},
+                                   field{"a", &backwards::a, 1, wire::u8{}, range{0, 9}},
+                                   field{"b", &backwards::b, 2, wire::i8{}, range{-9, 9}},
+                                   field{"c", &backwards::c, 3, wire::u8{}, range{10, 19}});
+    t.declared_size = 16;
+    return t;
+}
 }  // namespace demo_vec
 
 using namespace robowire;
@@ -432,4 +449,23 @@ TEST_CASE("vector checks: the frame built from the test's register", "[core][vec
     m.l = 100;
     m.e = -101;
     CHECK(encode(m).error() == error{errc::value_out_of_range, 6});
+}
+
+TEST_CASE("vector checks: members in another order than the wire's", "[core][vector]") {
+#if ROBOWIRE_SSE2 && !ROBOWIRE_OPTIMIZE_SIZE
+    static_assert(detail::decoded_image_ok<demo_vec::backwards>());  // tried, and turned down at run time
+#endif
+    // a 9, b -9, c 19
+    const std::array<std::uint8_t, 16> frame{0x3C, 9, 0xF7, 19};
+    const demo_vec::backwards value{19, -9, 9};
+    CHECK(decode<demo_vec::backwards>(frame).value() == value);
+    CHECK(encode(value).value() == bytes<16>::from(frame).value());
+    auto in = frame;
+    in[3] = 20;
+    CHECK(decode<demo_vec::backwards>(in).error() == error{errc::value_out_of_range, 3});
+    in[2] = 0xF6;
+    CHECK(decode<demo_vec::backwards>(in).error() == error{errc::value_out_of_range, 2});
+    auto m = value;
+    m.a = 10;
+    CHECK(encode(m).error() == error{errc::value_out_of_range, 1});
 }

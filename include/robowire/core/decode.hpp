@@ -131,6 +131,27 @@ ROBOWIRE_COLD constexpr error input_field_error(const std::uint8_t* data, std::s
     (void)check_record<M>(in_bytes(data, size), 0, err, std::make_index_sequence<field_count_v<M>>{});
     return err;
 }
+#if ROBOWIRE_SSE2
+// decode<M> stores the message from its test's register (decoded_image_v).
+template <class M>
+constexpr bool decoded_image_ok() noexcept {
+    if constexpr (!ROBOWIRE_OPTIMIZE_SIZE && field_count_v<M> >= lanes_min_fields && flat_record_v<M> &&
+                  !reports_trailing<M>)
+        return decoded_image_v<M> >= 0;
+    return false;
+}
+// Do m's members lie in wire order from the first field's wire offset on
+// (object offset = wire offset - that offset)? (A constant once inlined.)
+template <class M>
+ROBOWIRE_ALWAYS_INLINE bool members_from_first(const M& m) noexcept {
+    constexpr std::size_t first = static_cast<std::size_t>(decoded_image_v<M>) + lanes_v<M, false>.win[0].at[0];
+    const auto obj = reinterpret_cast<const unsigned char*>(&m);
+    return [&]<std::size_t... I>(std::index_sequence<I...>) {
+        return ((offset_in(obj, &(m.*(field_v<M, I>.member))) + first == field_v<M, I>.offset) && ...);
+    }
+    (std::make_index_sequence<field_count_v<M>>{});
+}
+#endif
 // Whether check_input's vector test checks M's fixed bytes (none known), so
 // that input_ok checks the length only.
 template <std::size_t Known, class M>
@@ -480,6 +501,21 @@ template <described M>
             r = e;  // checked before the message is made: nothing to undo
             return r;
         }
+#if ROBOWIRE_SSE2 && UINTPTR_MAX > 0xFFFFFFFFu
+        if constexpr (detail::decoded_image_ok<M>()) {  // the message from the test's register
+            if (!ROBOWIRE_CONSTANT_EVALUATED()) {
+                M& v = detail::build_unset(r);
+                if (detail::members_from_first(v)) {
+                    // r's storage (its first member) is 16 bytes or more on a 64-bit host (result.hpp)
+                    detail::store_decoded<M>(reinterpret_cast<unsigned char*>(&r), in.data(),
+                                             std::make_index_sequence<16>{});
+                    return r;
+                }
+                detail::write_body(v, in);
+                return r;
+            }
+        }
+#endif
         if constexpr (detail::message_via_local && detail::decode_writes_every_member_v<M>) {
             M local{};
             detail::write_body(local, in);

@@ -484,6 +484,43 @@ ROBOWIRE_ALWAYS_INLINE void store_image(unsigned char* d, lane_bytes x, std::ind
 }
 #endif
 
+// Decode of a message whose every field is a lane of its test's register
+// (one-byte fields; members in wire order from the first field's wire
+// offset on, checked at run time): the lanes to move the register down so
+// that it holds the message's bytes, or -1 (no such plan).
+template <class M, std::size_t... I>
+constexpr int decoded_image(std::index_sequence<I...>) noexcept {
+    const lane_plan& p = lanes_v<M, false>;
+    const lane_window& w = p.win[0];
+    constexpr std::size_t n = sizeof...(I);
+    if (!p.use || p.words != 0 || n >= 64 || p.covered != (std::uint64_t{1} << n) - 1 || w.loads == 0) return -1;
+    const std::size_t len = w.loads == 16 ? 16 : w.loads == 2 ? w.at[1] + w.tail - w.at[0] : 8;
+    const std::size_t offs[] = {field_v<M, I>.offset...}, count[] = {shape_t<M, I>::count...};
+    std::size_t first = offs[0];
+    for (std::size_t i = 0; i < n; ++i) {
+        if (offs[i] < w.at[0] || offs[i] + count[i] > w.at[0] + len) return -1;
+        first = offs[i] < first ? offs[i] : first;
+    }
+    return static_cast<int>(first - w.at[0]);
+}
+template <class M>
+inline constexpr int decoded_image_v = decoded_image<M>(std::make_index_sequence<field_count_v<M>>{});
+#if ROBOWIRE_SSE2
+// Writes the message's bytes (decoded_image_v<M>) from `in` (checked by its
+// test; the same load, which the compiler shares) as 16 bytes to `to`.
+template <class M, std::size_t... J>
+ROBOWIRE_ALWAYS_INLINE void store_decoded(unsigned char* to, const unsigned char* in,
+                                          std::index_sequence<J...>) noexcept {
+    constexpr const lane_plan& p = lanes_v<M, false>;
+    constexpr std::size_t down = static_cast<std::size_t>(decoded_image_v<M>);
+    lane_bytes x;
+    if constexpr (p.win[0].loads == 2) x = lanes_load<p, 0>(in + p.win[0].at[0], in + p.win[0].at[1]);
+    else x = lanes_load<p, 0>(in + p.win[0].at[0], nullptr);
+    const lane_bytes y = __builtin_shufflevector(x, lane_bytes{}, (J + down < 16 ? J + down : 16)...);  // psrldq
+    std::memcpy(to, &y, 16);
+}
+#endif
+
 // Codes of a one-byte enum whose codes are not one run, 1 where valid: one
 // load in place of a range and a bit test (speed builds; 256 bytes).
 template <class E>
