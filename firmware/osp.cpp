@@ -37,6 +37,8 @@ ENTRY void osp_encode(std::size_t which, std::uint16_t value) {
     if (r) out(*r);
 }
 osp::scanner scanner_state;
+// docs/osp.md, "The scanner": 40 bytes on a 32-bit core under ROBOWIRE_OPTIMIZE_SIZE, else 48.
+static_assert(sizeof(void*) != 4 || sizeof(osp::scanner) == (ROBOWIRE_OPTIMIZE_SIZE ? 40 : 48));
 ENTRY void osp_scan(const std::uint8_t* p, std::size_t n) {
     scanner_state.feed({p, n}, [](osp::scanner::frame_bytes f) { osp_decode(f.data(), f.size()); });
 }

@@ -10,6 +10,11 @@
 using namespace robowire;
 using osp::scanner;
 
+// docs/osp.md, "The scanner": its buffer (10 bytes, 19 in speed builds), its
+// length and three 64-bit counters.
+static_assert(sizeof(scanner) == (sizeof(void*) == 8 ? (ROBOWIRE_OPTIMIZE_SIZE ? 48 : 56)
+                                                      : (ROBOWIRE_OPTIMIZE_SIZE ? 40 : 48)));
+
 namespace {
 using frame10 = std::array<std::uint8_t, 10>;
 
