@@ -352,8 +352,8 @@ check(rc == 1 and "line 18 (device to host): buwizz3 status" in out and "line 21
       and "line 23 (device to host): buwizz3 charger_settings" in out
       and "line 24 (host to device): buwizz3 check_charger_settings" in out
       and "line 25 (host to device): buwizz3 set_data_period" in out and "period_ms  50 ms" in out
-      and "error: line 22: set_motor_data.power: value out of range (valid -127..127 raw) at byte 1\n" in err
-      and "hint: line 22: power[0] at byte 1 is -128 (0x80)\n" in err
+      and "error: 2026-03-14T10:12:09.300 line 22: set_motor_data.power: value out of range (valid -127..127 raw) at byte 1\n" in err
+      and "hint: 2026-03-14T10:12:09.300 line 22: power[0] at byte 1 is -128 (0x80)\n" in err
       and "read as nRF Connect (Android) log: lines 25, frames 6, decoded 5, errors 1" in err
       and "other characteristics 1" in err, f"Android log: {rc} {out!r} {err!r}")
 rc, out, err = run("decode", "buwizz3", "--file", "-", "--json", stdin=android_log.encode())
@@ -365,8 +365,19 @@ check([(d.get("type"), d.get("line"), d.get("direction"), d.get("message")) for 
       and docs[0].get("uuid") == APP and docs[0]["fields"].get("battery_voltage_raw") == 80
       and docs[2].get("bytes") == "30 80 00 00 00 00 00 00 00", f"Android log --json: {rc} {out!r}")
 rc, out, err = run("decode", "navbot", "--file", "-", stdin=android_log.encode())
-check(rc == 1 and out == "" and "error: line 15: frame: bad header byte at byte 0" in err and "other characteristics 6" in err,
+check(rc == 1 and out == "" and "error: 2026-03-14T10:12:05.120 line 15: frame: bad header byte at byte 0" in err
+      and "other characteristics 6" in err,
       f"navbot on a BuWizz3 log: the BuWizz3 characteristic's lines are skipped: {rc} {err!r}")
+# decode's error lines on stderr carry the log line's time before its number, as scan's do (docs/cli.md, Time);
+# a line without a time (a bare hex line) has its number only
+timed = f"nRF Connect, 2026-03-14\nI 10:12:09.300 Data written to {APP}, value: (0x) 30-80-00-00-00-00-00-00-00\n30 80 00 00 00 00 00 00 00\n"
+rc, out, err = run("decode", "buwizz3", "--file", "-", stdin=timed.encode())
+check(rc == 1 and out == "" and err.splitlines()[:4] == [
+          "error: 2026-03-14T10:12:09.300 line 2: set_motor_data.power: value out of range (valid -127..127 raw) at byte 1",
+          "hint: 2026-03-14T10:12:09.300 line 2: power[0] at byte 1 is -128 (0x80)",
+          "error: line 3: set_motor_data.power: value out of range (valid -127..127 raw) at byte 1",
+          "hint: line 3: power[0] at byte 1 is -128 (0x80)"],
+      f"decode --file: error lines carry the log line's time: {rc} {err!r}")
 # a log line given as the argument; a log with bare hex lines pasted in
 rc, out, err = run("decode", "buwizz3", f"I 10:12:09.700 Data written to {APP}, value: (0x) 32-32")
 check(rc == 0 and out.startswith("10:12:09.700 line 1 (host to device): buwizz3 set_data_period"), f"log line argument: {rc} {out!r} {err!r}")
@@ -398,7 +409,7 @@ desktop_log = "\n".join([
     "2026-03-14T10:15:03.127Z INFO Attribute value written, handle: 0x10, value (0x): 32-32",  # line 7
 ]) + "\n"
 rc, out, err = run("decode", "--file", "-", stdin=desktop_log.encode())
-check(rc == 2 and out == "" and "line 5: which protocol?" in err and "attribute handles" in err
+check(rc == 2 and out == "" and err.startswith("error: 2026-03-14T10:15:02.331 line 5: which protocol?") and "attribute handles" in err
       and len(err.strip().splitlines()) == 1, f"desktop log without protocol: {rc} {err!r}")
 rc, out, err = run("decode", "buwizz3", "--file", "-", stdin=desktop_log.encode())
 check(rc == 0 and "line 5 (device to host): buwizz3 status" in out and "line 7 (host to device): buwizz3 set_data_period" in out

@@ -519,14 +519,14 @@ private:
         if (!p) {
             // without a protocol, every frame needs a characteristic UUID to pick one
             const std::string why =
-                "line " + std::to_string(num) + ": which protocol? " +
+                "which protocol? " +
                 (pl.handle.empty() ? std::string("the line names no characteristic")
                                    : "the " + source() + " names attribute handles, not characteristic UUIDs") +
                 ": give " + protocol_names() + " (robowire decode buwizz3 --file " + name_ + ")";
             record_meta m;
             m.line = num;
-            out_.error(m, why, "");
-            say("error: " + why);
+            out_.error(m, "line " + std::to_string(num) + ": " + why, "");
+            say("error: " + line_prefix(num, pl) + why);
             stopped_ = true;
             return false;
         }
@@ -562,8 +562,18 @@ private:
         const std::string bytes = pl.bytes.empty() ? std::string() : shorten(hex_of(pl.bytes), 200);
         if (!bytes.empty()) extra.emplace_back("bytes", bytes);
         if (out_.error(meta, error, text, extra, hints)) return;
-        say("error: line " + std::to_string(num) + ": " + error);
-        for (const auto& h : hints) say("hint: line " + std::to_string(num) + ": " + h);
+        // decode: "error: <time> line N: ..." on stderr, the same place as scan's records
+        const std::string at = line_prefix(num, pl);
+        say("error: " + at + error);
+        for (const auto& h : hints) say("hint: " + at + h);
+    }
+    // "<time> line N: " (no time when the line has none): where an error line on stderr comes from
+    std::string line_prefix(std::size_t num, const parsed_line& pl) {
+        record_meta at = meta_of(num, pl);
+        at.dir = link_direction::unknown;
+        std::string prefix;
+        put_text_prefix(prefix, at);
+        return prefix;
     }
 
     void reassemble(std::size_t num, const parsed_line& pl) {
