@@ -15,7 +15,9 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
+#include <system_error>
 #include <tuple>
 
 #include "cli.hpp"
@@ -82,9 +84,28 @@ void add_format_options(CLI::App& sub, format_option& f, const std::string& what
                  "write each record as it is decoded (the default when stdout is a terminal; otherwise in blocks)");
     if (csv) {
         sub.add_option("--message", f.message, "CSV: the message whose table is written (e.g. status)");
-        sub.add_option("--out-dir", f.out_dir,
-                       "CSV: one file per message in DIR, <protocol>_<message>.csv (with --message: that one only)");
+        sub.add_option(
+            "--out-dir", f.out_dir,
+            "CSV: one file per message in DIR (created if missing), <protocol>_<message>.csv (with --message: that "
+            "one only)");
     }
+}
+// --out-dir: the directory made (with its parents) when missing, before anything is
+// decoded; false after an error (reported: exit status 1).
+bool make_out_dir(const std::string& dir) {
+    if (dir.empty()) return true;
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (!ec && !std::filesystem::is_directory(dir, ec) && !ec) ec = std::make_error_code(std::errc::not_a_directory);
+    if (ec) {
+        err_line("error: --out-dir " + dir + ": cannot create the directory: " + ec.message());
+        return false;
+    }
+    if (::access(dir.c_str(), W_OK | X_OK) != 0) {
+        err_line("error: --out-dir " + dir + ": cannot write into the directory: " + std::strerror(errno));
+        return false;
+    }
+    return true;
 }
 // The CSV files written (stderr), and a write error (exit status 1).
 int finish_output(output& out, int rc) {
@@ -163,13 +184,16 @@ int run_decode(const decode_options& opt) {
             return exit_bad_input;
         }
         // text (hex lines, an nRF Connect log): every line that holds a frame, as it is read
-        if (opt.hex_file || (!opt.binary_file && !looks_binary(in.peek())))
+        if (opt.hex_file || (!opt.binary_file && !looks_binary(in.peek()))) {
+            if (!make_out_dir(out->out_dir)) return exit_bad_input;
             return finish_output(*out, decode_lines(pp, in, *out, lo));
+        }
         if (!pp) {
             err_line("error: a binary file holds one frame: give its protocol (robowire decode buwizz3 --file " +
                      opt.file + ")");
             return exit_usage;
         }
+        if (!make_out_dir(out->out_dir)) return exit_bad_input;
         // one frame: at most 64 KB are read (a frame is far shorter)
         byte_vector bytes;
         for (auto b = in.read(); !b.empty() && bytes.size() <= (1u << 16); b = in.read())
@@ -200,6 +224,7 @@ int run_decode(const decode_options& opt) {
     for (const auto& a : opt.hex) joined += (joined.empty() ? "" : " ") + a;
     // a line copied from an nRF Connect log: its value, direction and UUID
     if (is_log_line(joined)) {
+        if (!make_out_dir(out->out_dir)) return exit_bad_input;
         input_stream in;
         in.open_text(joined, "the argument");
         return finish_output(*out, decode_lines(pp, in, *out, lo));
@@ -216,6 +241,7 @@ int run_decode(const decode_options& opt) {
         err_line("error: " + error);
         return exit_bad_input;
     }
+    if (!make_out_dir(out->out_dir)) return exit_bad_input;
     return finish_output(*out, report(*pp, *b, lo.forced, *out));
 }
 

@@ -617,6 +617,18 @@ rc, out, err = run("decode", "buwizz3", "--file", "-", "--format", "csv", "--out
 check(sorted(os.listdir(outdir)) == ["buwizz3_charger_settings.csv", "buwizz3_check_charger_settings.csv",
                                      "buwizz3_set_data_period.csv", "buwizz3_set_motor_data.csv", "buwizz3_status.csv"]
       and out == "" and "wrote " in err, f"CSV --out-dir: {os.listdir(outdir)} {err!r}")
+# --out-dir DIR that does not exist yet is created, its parents too; one that cannot be is an error before any decoding
+newdir = os.path.join(td, "new", "csv")
+rc, out, err = run("decode", "buwizz3", "--file", "-", "--format", "csv", "--out-dir", newdir, "--message", "status",
+                   stdin=android_log.encode())
+check(os.path.isdir(newdir) and os.listdir(newdir) == ["buwizz3_status.csv"] and out == ""
+      and "wrote " + os.path.join(newdir, "buwizz3_status.csv") + "\n" in err and "cannot open" not in err,
+      f"CSV --out-dir created when missing: {rc} {err!r}")
+blocker = tmp("blocker", "a file, not a directory\n")
+rc, out, err = run("decode", "buwizz3", "--file", "-", "--format", "csv", "--out-dir", os.path.join(blocker, "csv"),
+                   stdin=android_log.encode())
+check(rc == 1 and out == "" and err.startswith(f"error: --out-dir {os.path.join(blocker, 'csv')}: cannot create the directory: ")
+      and len(err.splitlines()) == 1, f"CSV --out-dir that cannot be created: {rc} {err!r}")
 rc, out, err = run("decode", "buwizz3", "--file", "-", "--format", "csv", stdin=android_log.encode())
 check(rc == 2 and "--message" in err and out == "", f"CSV needs --message or --out-dir: {rc} {err!r}")
 
