@@ -425,6 +425,21 @@ rc, out, err = run("decode", "buwizz3", "--file", "-", stdin=hex_lines.encode())
 check(rc == 1 and out.startswith("line 2: buwizz3 set_motor_data") and "line 4: buwizz3 set_data_period" in out
       and "error: line 5: bad hex: 'G' at character 4" in err and "error: line 6: set_ramp_rates: input too short (13 bytes) at byte 1" in err
       and "read as hex lines: lines 6, frames 4, decoded 2, errors 2" in err, f"hex lines: {rc} {out!r} {err!r}")
+# a bad digit in a logged value is reported as in a hex line: the character and its place in the value (after "(0x) ")
+for name, data, want in [
+        ("hex line", "32-3G\n", ["error: line 1: bad hex: 'G' at character 4 is not a hex digit"]),
+        ("Android log", f"I 10:12:09.072 Data written to {APP}, value: (0x) 32-3G\n"
+                        f"I 10:12:09.073 Data written to {APP}, value: (0x) 32-G3, \"2G\"\n",
+         ["error: 10:12:09.072 line 1: bad hex: 'G' at character 4 is not a hex digit",
+          "error: 10:12:09.073 line 2: bad hex: 'G' at character 3 is not a hex digit"]),
+        ("desktop log", "2026-03-14T10:15:03.127Z INFO Attribute value written, handle: 0x10, value (0x): 32-3G\n",
+         ["error: 2026-03-14T10:15:03.127 line 1: bad hex: 'G' at character 4 is not a hex digit"])]:
+    rc, out, err = run("decode", "buwizz3", "--file", "-", stdin=data.encode())
+    check(rc == 1 and out == "" and err.splitlines()[:-1] == want, f"bad hex digit in a {name}: {rc} {err!r}")
+# a log line given as an argument is a whole line: no "no line end" remark
+rc, out, err = run("decode", "buwizz3", f"I 10:12:09.072 Data written to {APP}, value: (0x) 32-3G")
+check(rc == 1 and out == "" and err.splitlines()[:1] == ["error: 10:12:09.072 line 1: bad hex: 'G' at character 4 is not a hex digit"]
+      and "line end" not in err, f"bad hex digit in a log line argument: {rc} {err!r}")
 rc, out, err = run("decode", "--file", "-", stdin=b"30 7F 81 00 40 C0 01 21 3F\n")
 check(rc == 2 and "line 1: which protocol?" in err, f"hex lines without protocol: {rc} {err!r}")
 rc, out, err = run("decode", "30", "7F")

@@ -50,6 +50,8 @@ bool input_stream::open(const std::string& path, std::string& err) {
 void input_stream::open_text(std::string_view text, std::string n) {
     name = std::move(n);
     buf_.assign(text);
+    // an argument ends where it ends: its last line is whole, not cut short
+    if (buf_.empty() || (buf_.back() != '\n' && buf_.back() != '\r')) buf_ += '\n';
     pos_ = 0;
     eof_ = true;
 }

@@ -20,7 +20,6 @@ namespace {
 void err_line(const std::string& s) { std::fprintf(stderr, "%s\n", s.c_str()); }
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_hex_digit(char c) { return is_digit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'); }
 bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
 void lower_into(std::string& o, std::string_view s) {
     o.assign(s);
@@ -122,17 +121,17 @@ struct parsed_line {
     }
 };
 
-// The bytes of a logged value: "(0x) 01-6D-50" up to the first character that
-// is not part of it (nRF Connect may add the value as text: `, "Hello"`).
+// The bytes of a logged value: "(0x) 01-6D-50" up to the comma before the
+// value as text that nRF Connect may add (`, "Hello"`).
 bool value_bytes(std::string_view v, byte_vector& out, std::string& error) {
     v = trim(v);
     if (starts_with(v, "(0x)")) v.remove_prefix(4);
     v = trim(v);
     std::size_t used = 0;  // the common form, one pass
     if (parse_dashed_hex(v, out, used)) return true;
-    std::size_t n = 0;
-    while (n < v.size() && (is_hex_digit(v[n]) || v[n] == '-' || v[n] == ':' || v[n] == ' ')) ++n;
-    v = trim(v.substr(0, n));
+    // the value runs up to the comma before the text: a character in it that is no hex digit
+    // is reported as in a hex line, with its place in the value
+    v = trim(v.substr(0, v.find(',')));
     out.clear();
     if (v.empty()) return true;
     return parse_hex_into(v, out, error);

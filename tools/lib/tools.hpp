@@ -281,7 +281,7 @@ public:
     // path "-": stdin. false and `error` when it cannot be read (missing,
     // unreadable, a directory, stdin closed).
     bool open(const std::string& path, std::string& error);
-    // Reads `text` instead (an argument).
+    // Reads `text` instead (an argument): its last line counts as ended (`ended` true).
     void open_text(std::string_view text, std::string name);
     // Reads from `source` instead (the Python package's file objects): it fills
     // at most n bytes at p and returns how many, 0 at the end of the input
