@@ -316,11 +316,17 @@ export function generate(schema, p) {
   if (p.frame) {
     out.push(decoder(p.frame, 'dframe', []));
     out.push(`const MF=${info(p.frame)};`);
+    // no message takes every key (OSP): bytes of a length the frame does not take, with a
+    // start marker wrong or a key no message has, are no frame: the frame's line, as the tool's
+    const frameLength = p.frame.lengths.map(([a, z]) => (a === z ? `n===${a}` : `(n>=${a}&&n<=${z})`)).join('||');
+    const noFrame = keyless < 0
+      ? `if(!(${frameLength})&&(e.code==='bad_header'||i===undefined))throw messageError(E,MF,e.code,e.offset);\n`
+      : '';
     out.push(`function decodeAny(b,dv,n){
 try{dframe(b,dv,n);}catch(e){if(!(e instanceof Fail))throw e;
 if(n<=LAST)throw messageError(E,MF,e.code,e.offset);
 const i=KEYS.any[keyAt(b)]??${keyless < 0 ? 'undefined' : keyless};
-if(i===undefined)throw keyError(E,KO.map((o)=>b[o]),e.code,e.offset);
+${noFrame}if(i===undefined)throw keyError(E,KO.map((o)=>b[o]),e.code,e.offset);
 throw messageError(E,MI[i],e.code,e.offset);}
 const i=KEYS.any[keyAt(b)]??${keyless < 0 ? 'undefined' : keyless};
 if(i===undefined)throw keyError(E,KO.map((o)=>b[o]),'unknown_message',KO[0]);

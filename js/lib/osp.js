@@ -180,6 +180,7 @@ function decodeAny(b,dv,n){
 try{dframe(b,dv,n);}catch(e){if(!(e instanceof Fail))throw e;
 if(n<=LAST)throw messageError(E,MF,e.code,e.offset);
 const i=KEYS.any[keyAt(b)]??undefined;
+if(!(n===10)&&(e.code==='bad_header'||i===undefined))throw messageError(E,MF,e.code,e.offset);
 if(i===undefined)throw keyError(E,KO.map((o)=>b[o]),e.code,e.offset);
 throw messageError(E,MI[i],e.code,e.offset);}
 const i=KEYS.any[keyAt(b)]??undefined;

@@ -234,6 +234,22 @@ rc, out, err = run("decode", "osp", "FF AA 03 01 0A 0B 0C 0D 55 77", "--json")
 doc = parse_json(out)
 check(rc == 1 and doc.get("type") == "error" and doc.get("error") == "unknown key 0x03 0x01 at byte 2"
       and doc.get("hints") == ["DEV 03 CMD 01 params 0A 0B 0C 0D"], f"decode --json error: {out!r}")
+# bytes that are no OSP frame (the length and a start marker wrong): osp::decode's error, bad_header at byte 0, in
+# osp::frame's line (bytes 2 and 3 name no message), then the byte expected and the length given
+noise_hints = ["hint: byte 0 is 0x00, expected 0xFF (frames are FF AA DEV CMD P1..P4 55 77)", "hint: 5 bytes given (a frame is 10 bytes)"]
+rc, out, err = run("decode", "osp", "00 11 37 FF 22")
+check(rc == 1 and out == "" and err.splitlines() == ["error: frame: bad header byte at byte 0", *noise_hints],
+      f"decode osp, 5 bytes of noise: {rc} {err!r}")
+rc, out, err = run("decode", "osp", "--file", "-", stdin=b"00 11 37 FF 22\n")
+check(rc == 1 and out == "" and err.splitlines()[:3] == ["error: line 1: frame: bad header byte at byte 0",
+                                                          *[h.replace("hint: ", "hint: line 1: ") for h in noise_hints]],
+      f"decode osp --file, a line of noise: {rc} {err!r}")
+rc, out, err = run("decode", "osp", "FF AA 37 FF 22")  # the markers right, bytes 2 and 3 no DEV and CMD: osp::frame's line
+check(rc == 1 and out == "" and err.splitlines() == ["error: frame: input too short (10 bytes) at byte 5", "hint: 5 bytes given"],
+      f"decode osp, 5 bytes, no message's key: {rc} {err!r}")
+rc, out, err = run("decode", "osp", "00 11 37 FF 22", "--json")
+check(rc == 1 and parse_json(out).get("error") == "frame: bad header byte at byte 0"
+      and parse_json(out).get("hints") == [h[6:] for h in noise_hints], f"decode osp --json, 5 bytes of noise: {out!r}")
 
 # ---- list
 rc, out, _ = run("list")

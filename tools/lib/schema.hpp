@@ -197,7 +197,9 @@ inline json output_rules() {
          "then \" byte\"/\" bytes\"; the range for value_out_of_range of int, bool and bits fields, unit when "
          "raw_is_physical, else \"raw\"; a key no message has: \"unknown key 0x3A[ 0x01]\" (hex of each "
          "key byte)[: <text> unless unknown_message] at byte <offset>; input not reaching the key: "
-         "\"<text> at byte <offset>\""}};
+         "\"<text> at byte <offset>\"; with a frame whose messages all have a key (osp): input of a length the "
+         "frame does not take whose error is bad_header or whose key no message has: the frame's line "
+         "(\"frame: bad header byte at byte 0\")"}};
 }
 inline json document(json protocols) {
     return {{"format", format_version},
