@@ -615,6 +615,18 @@ rc, out, err = run("decode", "buwizz3", "--file", "-", "--since", "2026-03-15T00
                    stdin=roll.encode())
 check(rc == 0 and out.startswith("2026-03-15T00:00:00.100 line 3 (host to device): buwizz3 set_data_period")
       and "line 2" not in out and "line 4" not in out and "outside time range 2" in err, f"--since/--until: {out!r} {err!r}")
+# each line is counted once, the first that applies: without frame, other characteristics, outside time range, frames
+ranged = "\n".join(["nRF Connect, 2026-03-14",
+                     "I 10:12:05.120 Read Response received from 00002a00-0000-1000-8000-00805f9b34fb, value: (0x) 42-75, \"Bu\"",
+                     f"I 10:12:08.000 Data written to {APP}, value: (0x) 32-32",
+                     f"I 10:12:09.700 Data written to {APP}, value: (0x) 32-32"]) + "\n"
+rc, out, err = run("decode", "buwizz3", "--file", "-", "--since", "10:12:09", stdin=ranged.encode())
+check(rc == 0 and out.startswith("2026-03-14T10:12:09.700 line 4 (host to device): buwizz3 set_data_period")
+      and err == "stdin: read as nRF Connect (Android) log: lines 4, frames 1, decoded 1, errors 0, lines without frame 1, "
+                 "other characteristics 1, outside time range 1\n", f"summary: another characteristic outside the range: {rc} {err!r}")
+rc, out, err = run("decode", "--file", "-", stdin=ranged.replace("42-75", "42-7G").encode())  # never a candidate, whatever its bytes
+check(rc == 0 and err.endswith("lines 4, frames 2, decoded 2, errors 0, lines without frame 1, other characteristics 1\n"),
+      f"summary: a bad value of another characteristic: {rc} {err!r}")
 rc, out, err = run("decode", "buwizz3", "--file", "-", "--since", "25:00", stdin=roll.encode())
 check(rc == 2 and "--since" in err, f"bad --since: {rc} {err!r}")
 rc, out, err = run("decode", "buwizz3", "--file", "-", "--json", stdin=desktop_log.encode())

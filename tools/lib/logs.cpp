@@ -417,7 +417,7 @@ private:
     // Does the line wait for a decision?
     bool undecided(const parsed_line& pl) const {
         if (pl.kind == parsed_line::bad && !pl.log && !log_ && !hex_decided_ && pl.source[0]) return true;
-        if (p_ && !unknown_decided_ && pl.kind == parsed_line::frame && !pl.uuid.empty()) {
+        if (p_ && !unknown_decided_ && pl.kind != parsed_line::none && !pl.uuid.empty()) {
             const auto k = protocol_of_uuid(pl.uuid);
             if (!k) return true;
         }
@@ -487,33 +487,33 @@ private:
 
     bool line(std::size_t num, parsed_line& pl) {
         if (pl.kind == parsed_line::bad && !pl.log && log_ && pl.source[0]) pl.kind = parsed_line::none;
+        // each line is counted once, under the first that applies: no frame, another
+        // characteristic (never a candidate), outside the time range, a frame
         if (pl.kind == parsed_line::none) {
             ++c_.no_frame;
             return true;
         }
-        if (!in_range(pl)) {
-            ++c_.outside;
-            return true;
-        }
-        if (pl.kind == parsed_line::bad) {
-            ++c_.frames;
-            fail(num, pl, nullptr, pl.error, {}, exit_bad_input);
-            return true;
-        }
-        ++c_.frames;
         const protocol* p = p_;
         if (!pl.uuid.empty()) {
             const auto k = protocol_of_uuid(pl.uuid);
             // another characteristic (device name, battery, a port's UART...)
             if ((!k && !decode_unknown_) || (k && p_ && k->p != p_)) {
                 ++c_.other;
-                --c_.frames;
                 if (other_uuids_.size() < 3 &&
                     std::find(other_uuids_.begin(), other_uuids_.end(), pl.uuid) == other_uuids_.end())
                     other_uuids_.push_back(shorten(pl.uuid, 40));
                 return true;
             }
             if (k) p = k->p;
+        }
+        if (!in_range(pl)) {
+            ++c_.outside;
+            return true;
+        }
+        ++c_.frames;
+        if (pl.kind == parsed_line::bad) {
+            fail(num, pl, nullptr, pl.error, {}, exit_bad_input);
+            return true;
         }
         if (!p) {
             // without a protocol, every frame needs a characteristic UUID to pick one
