@@ -237,6 +237,20 @@ const outcomeText = {
   need_more: 'part of a message, more frames to come',
   complete: 'message complete',
 };
+// The lines of a message's frames, as the tool writes them: a range where they
+// follow each other ("4-5", "2, 4", "2-4, 6"); of more than 8 runs the first 3,
+// "..." and the last.
+function lineList(lines) {
+  const runs = [];
+  for (const n of lines) {
+    if (runs.length && n === runs[runs.length - 1][1] + 1) runs[runs.length - 1][1] = n;
+    else runs.push([n, n]);
+  }
+  const shown = runs.length > 8 ? [...runs.slice(0, 3), null, runs[runs.length - 1]] : runs;
+  return (lines.length === 1 ? 'line ' : 'lines ') +
+    shown.map((r) => (r === null ? '...' : r[0] === r[1] ? `${r[0]}` : `${r[0]}-${r[1]}`)).join(', ');
+}
+
 // The frame layout: command, remaining and payload offsets, payload size.
 export class FrameReassembler {
   constructor(layout, decode, decodeFrame, protocol, errors) {
@@ -285,7 +299,7 @@ export class FrameReassembler {
       ++this.counters.reassembly_errors;
       let dropped = '';
       if (this.lines.length)
-        dropped = `; the partial message (line${this.lines.length > 1 ? 's ' : ' '}${this.lines[0]}${this.lines.length > 1 ? `-${this.lines[this.lines.length - 1]}` : ''}) is dropped`;
+        dropped = `; the partial message (${lineList(this.lines)}) is dropped`;
       this.lines = [];
       if (frame.remaining !== 0 && r.code === 'command_changed') this.lines.push(line);
       let note = `${this.errors[r.code]} at byte ${r.offset}`;

@@ -528,6 +528,25 @@ check(re_ == [(4, "need_more"), (5, "complete"), (6, "need_more"), (7, "complete
       and [d for d in docs if d.get("outcome") == "complete"][0].get("text") == '{"type":"get_device_info"}'
       and docs[-1].get("type") == "counters" and docs[-1].get("messages_reassembled") == 3 and docs[-1].get("frames") == 14,
       f"scan navbot --json: {re_} {docs[-1]}")
+# the lines of a message are the lines its frames are on: a range only where they follow each other (here the
+# robot's echo of each written frame, on the notify characteristic, comes between them)
+c = navbot_frames('{"type":"get_device_info"}')
+d = navbot_frames('{"type":"set_name","name":"NAVBOT-ES02 kitchen"}')
+echoed = "\n".join(["nRF Connect, 2026-03-14",
+                     w("01.000", c[0]), nt("01.010", c[0]), w("01.020", c[1]),                       # lines 2, 4: complete
+                     w("02.000", d[0]), nt("02.010", d[0]), w("02.020", d[1]), w("02.030", d[3])]) + "\n"  # 5, 7, 8: d[2] lost
+rc, out, err = run("scan", "navbot", "-", stdin=echoed.encode())
+check(rc == 0 and '2026-03-14T11:02:01.020 line 4: navbot reassembly: message complete, 2 frames (lines 2, 4), command 0x02, '
+                  '26 bytes of JSON: {"type":"get_device_info"}\n' in out
+      and "2026-03-14T11:02:02.030 line 8: navbot reassembly: frame out of sequence at byte 3: remaining 0 after 2, frames were "
+          "lost; the partial message (lines 5, 7) is dropped\n" in out, f"scan navbot: lines of a message with echoes between: {out!r}")
+# a long message with an echo after each frame: the first three lines, "...", the last
+e = navbot_frames('{"type":"set_name","name":"' + "N" * 120 + '"}')  # 149 bytes: 10 frames
+long_log = "".join(f"{w(f'05.{2 * i:03}', f)}\n{nt(f'05.{2 * i + 1:03}', f)}\n" for i, f in enumerate(e))
+rc, out, err = run("scan", "navbot", "-", stdin=long_log.encode())
+check(rc == 0 and len(e) == 10 and "line 19: navbot reassembly: message complete, 10 frames (lines 1, 3, 5, ..., 19), command 0x02" in out
+      and "line 20: navbot reassembly: message complete, 10 frames (lines 2, 4, 6, ..., 20), command 0x02" in out,
+      f"scan navbot: lines of a long message: {out!r}")
 
 # ---- monitor: a real pseudo-terminal pair from socat, a writer sending frames mixed with noise
 def monitor(json_mode):

@@ -301,6 +301,27 @@ const char* reassembly_text(robowire::navbot::reassembly r) {
     return "?";
 }
 
+// The lines of a message's frames: a range where they follow each other ("4-5",
+// "2, 4", "2-4, 6"); of more than 8 runs the first 3, "..." and the last.
+std::string line_list(const std::vector<std::size_t>& lines) {
+    std::vector<std::pair<std::size_t, std::size_t>> runs;
+    for (const std::size_t n : lines) {
+        if (!runs.empty() && n == runs.back().second + 1) runs.back().second = n;
+        else runs.emplace_back(n, n);
+    }
+    std::string s = lines.size() == 1 ? "line " : "lines ";
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        if (i) s += ", ";
+        if (runs.size() > 8 && i == 3) {
+            s += "..., ";
+            i = runs.size() - 1;
+        }
+        s += std::to_string(runs[i].first);
+        if (runs[i].second != runs[i].first) s += "-" + std::to_string(runs[i].second);
+    }
+    return s;
+}
+
 struct counters {
     std::size_t lines = 0, frames = 0, decoded = 0, errors = 0, no_frame = 0, other = 0, outside = 0;
     std::size_t messages = 0, duplicates = 0, restarts = 0, discarded = 0, reassembly_errors = 0;
@@ -589,10 +610,7 @@ private:
         if (!r) {
             ++c_.reassembly_errors;
             std::string dropped;
-            if (!s.lines.empty())
-                dropped = "; the partial message (line" + std::string(s.lines.size() > 1 ? "s " : " ") +
-                          std::to_string(s.lines.front()) +
-                          (s.lines.size() > 1 ? "-" + std::to_string(s.lines.back()) : "") + ") is dropped";
+            if (!s.lines.empty()) dropped = "; the partial message (" + line_list(s.lines) + ") is dropped";
             s.lines.clear();
             if (f->remaining != 0 && r.code() == errc::command_changed) s.lines.push_back(num);
             note = std::string(robowire::to_string(r.code())) + " at byte " + std::to_string(r.error().offset);
@@ -633,10 +651,9 @@ private:
                 ++c_.messages;
                 const auto text = s.r.text();
                 const bool is_json = s.r.json().has_value();
-                note = std::string(reassembly_text(*r)) + ", " + std::to_string(s.lines.size()) + " frames (lines " +
-                       std::to_string(s.lines.front()) + "-" + std::to_string(num) + "), command 0x" +
-                       hex_of(std::span(&f->command, 1)) + ", " + std::to_string(text.size()) + " bytes" +
-                       (is_json ? " of JSON" : "") + ": " + std::string(text);
+                note = std::string(reassembly_text(*r)) + ", " + std::to_string(s.lines.size()) + " frames (" +
+                       line_list(s.lines) + "), command 0x" + hex_of(std::span(&f->command, 1)) + ", " +
+                       std::to_string(text.size()) + " bytes" + (is_json ? " of JSON" : "") + ": " + std::string(text);
                 j.append(",\"command\":").append(std::to_string(f->command)).append(",\"lines\":[");
                 for (std::size_t i = 0; i < s.lines.size(); ++i)
                     j.append(i ? "," : "").append(std::to_string(s.lines[i]));
