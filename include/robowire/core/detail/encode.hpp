@@ -285,35 +285,40 @@ ROBOWIRE_ALWAYS_INLINE constexpr void store_element(const E& v, out_bytes out, s
 // missing_field when an optional block is present but an earlier one is not.
 template <class M, std::size_t... I>
 constexpr result<std::size_t> encoded_size(const M& m, std::index_sequence<I...>) noexcept {
-    std::size_t size = min_size_v<M>;
-    std::size_t first_absent = 0;
-    bool absent_seen = false;
-    bool missing = false;
-    auto one = [&](auto index) {
-        constexpr std::size_t i = decltype(index)::value;
-        constexpr const auto& f = field_v<M, i>;
-        using F = field_t<M, i>;
-        constexpr auto member_ptr = f.member;
-        if constexpr (F::is_optional) {
-            if (!(m.*member_ptr)) {
-                if (!absent_seen) {
-                    absent_seen = true;
-                    first_absent = f.offset;
+    if constexpr (!((field_t<M, I>::is_optional || field_t<M, I>::kind == wire_kind::tail) || ... || false)) {
+        (void)m;
+        return min_size_v<M>;  // every field always there: one size
+    } else {
+        std::size_t size = min_size_v<M>;
+        std::size_t first_absent = 0;
+        bool absent_seen = false;
+        bool missing = false;
+        auto one = [&](auto index) {
+            constexpr std::size_t i = decltype(index)::value;
+            constexpr const auto& f = field_v<M, i>;
+            using F = field_t<M, i>;
+            constexpr auto member_ptr = f.member;
+            if constexpr (F::is_optional) {
+                if (!(m.*member_ptr)) {
+                    if (!absent_seen) {
+                        absent_seen = true;
+                        first_absent = f.offset;
+                    }
+                } else if (absent_seen) {
+                    missing = true;
+                } else if (f.end() > size) {
+                    size = f.end();
                 }
-            } else if (absent_seen) {
-                missing = true;
-            } else if (f.end() > size) {
-                size = f.end();
+            } else if constexpr (F::kind == wire_kind::tail) {
+                const std::size_t end = f.offset + (m.*member_ptr).size();
+                if (end > size) size = end;
             }
-        } else if constexpr (F::kind == wire_kind::tail) {
-            const std::size_t end = f.offset + (m.*member_ptr).size();
-            if (end > size) size = end;
-        }
-    };
-    (one(std::integral_constant<std::size_t, I>{}), ...);
-    (void)one;
-    if (missing) return fail(errc::missing_field, first_absent);
-    return size;
+        };
+        (one(std::integral_constant<std::size_t, I>{}), ...);
+        (void)one;
+        if (missing) return fail(errc::missing_field, first_absent);
+        return size;
+    }
 }
 
 template <class M, std::size_t... K>
