@@ -91,19 +91,17 @@ namespace impl {
 // Byte offsets of maneuver's i8 fields (the signed channels), from its table.
 template <class Deferred = void>
 constexpr auto make_signed_offsets() noexcept {
-    constexpr std::size_t n = [] {
-        std::size_t k = 0;
-        for_each_field<maneuver>([&](const auto& f) {
-            if constexpr (std::remove_cvref_t<decltype(f)>::kind == wire_kind::i8) ++k;
-        });
-        return k;
-    }();
-    std::array<std::uint8_t, n> offsets{};
-    std::size_t k = 0;
-    for_each_field<maneuver>([&](const auto& f) {
-        if constexpr (std::remove_cvref_t<decltype(f)>::kind == wire_kind::i8)
-            offsets[k++] = static_cast<std::uint8_t>(f.offset);
+    // one pass over the fields as a pack (one function to compile, not one per field)
+    constexpr auto all = table_v<maneuver>.fields.apply([](const auto&... f) {
+        struct list {
+            std::uint8_t offset[sizeof...(f) + 1];
+            std::size_t size;
+        } r{};
+        ((f.kind == wire_kind::i8 ? (void)(r.offset[r.size++] = static_cast<std::uint8_t>(f.offset)) : void()), ...);
+        return r;
     });
+    std::array<std::uint8_t, all.size> offsets{};
+    for (std::size_t k = 0; k < all.size; ++k) offsets[k] = all.offset[k];
     return offsets;
 }
 // In flash: one loop over them, not a copy of the conversion per channel.
