@@ -141,7 +141,7 @@ private:
                     s & (equal_mask<16>(p + base, start2) >> (from + 1) | std::uint64_t{1} << (15 - from));
                 if (p[n - 1] != end1) ok &= ~(std::uint64_t{1} << 7 >> from);  // at last, EN1 is there too
                 false_starts_ +=
-                    bits9<>[static_cast<std::size_t>(ok != 0 ? s & ((std::uint64_t{1} << first_bit(ok)) - 1) : s)];
+                    bits9<>.n[static_cast<std::size_t>(ok != 0 ? s & ((std::uint64_t{1} << first_bit(ok)) - 1) : s)];
                 if (ok != 0) return hold(i + first_bit(ok));
             }
         } else {
@@ -309,10 +309,13 @@ private:
         x = (x & lanes(0x33)) + ((x >> 2) & lanes(0x33));
         return ((x + (x >> 4)) & lanes(0x0F)) * lanes(1) >> 56;
     }
+    struct bit_counts {  // a plain array: each call of std::array's operator[] costs g++ compile memory
+        std::uint8_t n[512];
+    };
     template <class = void>  // bits set in each 9-bit value (made where a chunk is scanned)
-    static constexpr std::array<std::uint8_t, 512> bits9 = [] {
-        std::array<std::uint8_t, 512> t{};
-        for (std::size_t v = 1; v < 512; ++v) t[v] = static_cast<std::uint8_t>(t[v & (v - 1)] + 1);
+    static constexpr bit_counts bits9 = [] {
+        bit_counts t{};
+        for (std::size_t v = 1; v < 512; ++v) t.n[v] = static_cast<std::uint8_t>(t.n[v & (v - 1)] + 1);
         return t;
     }();
     static constexpr std::size_t first_bit(std::uint64_t m) noexcept {
