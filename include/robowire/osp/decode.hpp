@@ -165,7 +165,11 @@ constexpr error check_frame(std::span<const std::uint8_t> in) noexcept {
 // FlagSet: d's flag is stored (true) already, with the frame (decode_at).
 template <std::size_t I, bool FlagSet = false>
 ROBOWIRE_ALWAYS_INLINE constexpr void decode_message(decode_result_t<I>& d, std::span<const std::uint8_t> in) noexcept {
-    if constexpr (FlagSet) {
+    using M = std::variant_alternative_t<I, typename dependent_message<I>::type>;
+    if constexpr (table_v<M>.field_count == 0) {  // a request: nothing to decode (and no field code to compile)
+        if constexpr (FlagSet) (void)codec::make_alternative_keep_flag<I>(d);
+        else (void)codec::make_alternative<I>(d);
+    } else if constexpr (FlagSet) {
         auto& m = codec::make_alternative_keep_flag<I>(d);
         if (const error e = codec::decode_fields(m, in, codec::discarded_on_error); e.code != errc::ok) d = e;
     } else if (const error e = codec::decode_fields(codec::make_alternative<I>(d), in, codec::discarded_on_error);
