@@ -119,17 +119,25 @@ constexpr bool keys_distinct() noexcept {
             if (keys[a] == keys[b]) return false;
     return true;
 }
+// The n fixed bytes f are those of fixed(DEV, CMD): the markers, DEV and
+// CMD, in that order. Not a template, and no std::array calls: cheap for
+// g++ to evaluate for every message.
+constexpr bool plain_fixed(const fixed_byte* f, std::size_t n) noexcept {
+    constexpr std::size_t offsets[6] = {0, 1, 2, 3, 8, 9};
+    if (n != 6) return false;
+    for (std::size_t k = 0; k < 6; ++k)
+        if (f[k].offset != offsets[k]) return false;
+    return f[0].value == start1 && f[1].value == start2 && f[4].value == end1 && f[5].value == end2;
+}
 // M is a 10-byte frame whose fixed bytes are exactly the markers, DEV and CMD:
-// what the shared frame check and frame writer below assume.
+// what the shared frame check and frame writer below assume. The sizes from
+// min_size_v and max_size_v, which the codecs evaluate anyway.
 template <class M>
 constexpr bool plain_frame() noexcept {
     constexpr auto& t = table_v<M>;
-    if (t.min_size() != frame_size || t.max_input() != frame_size || t.fixed.size() != 6) return false;
-    const auto expect =
-        fixed(static_cast<std::uint8_t>(frame_key_of<M>() >> 8), static_cast<std::uint8_t>(frame_key_of<M>()));
-    for (std::size_t k = 0; k < expect.size(); ++k)
-        if (t.fixed[k].offset != expect[k].offset || t.fixed[k].value != expect[k].value) return false;
-    return true;
+    return min_size_v<M> == frame_size &&
+           (t.declared_max_input ? t.declared_max_input : max_size_v<M>) == frame_size &&  // max_input()
+           plain_fixed(t.fixed.data(), t.fixed.size());
 }
 // The four markers: the fixed bytes of osp::frame (a copy of them alone, so
 // that the loop below keeps only 32 bytes of the table in flash).
