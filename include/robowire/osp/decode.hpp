@@ -258,10 +258,10 @@ ROBOWIRE_ALWAYS_INLINE constexpr void decode_by_key(decode_result_t<I...>& d, st
         decode_in_range<0, sizeof...(I), FlagSet>(d, static_cast<std::uint16_t>(in[2] | in[3] << 8), in);
     }
 }
-// Checks m's fields and writes them into `out` (FF AA DEV CMD 00 00 00 00 55 77 written already).
+// Checks m's fields and writes them into `out` (FF AA DEV CMD 00 00 00 00 55 77 written
+// already; encode checks plain_frame<M>).
 template <class M>
 ROBOWIRE_ALWAYS_INLINE constexpr error encode_fields(const M& m, std::span<std::uint8_t, frame_size> out) noexcept {
-    static_assert(plain_frame<M>(), "osp: a message must be one 10-byte frame with the markers, DEV and CMD fixed");
     error err{};
     if (codec::check_fields(m, err)) codec::store_fields(m, out);
     return err;
@@ -436,7 +436,11 @@ template <class Message = message>
     impl::write_frame(b, impl::keys_v<Message>[m.index()]);
     const auto out = std::span<std::uint8_t, frame_size>(b.data(), frame_size);
     codec::visit_held(m, [&](const auto& x) {
-        if (const error e = impl::encode_fields(x, out)) r = e;
+        using M = std::remove_cvref_t<decltype(x)>;
+        static_assert(impl::plain_frame<M>(),
+                      "osp: a message must be one 10-byte frame with the markers, DEV and CMD fixed");
+        if constexpr (table_v<M>.field_count != 0)  // a request: write_frame wrote it whole (no field code to compile)
+            if (const error e = impl::encode_fields(x, out)) r = e;
     });
     return r;
 }
