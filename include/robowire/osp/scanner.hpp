@@ -253,8 +253,8 @@ private:
 #if ROBOWIRE_SSE2
         if (!ROBOWIRE_CONSTANT_EVALUATED()) {
             v16 t{};  // lane k: the start bytes at p[k + 16 j]
-            for (std::size_t k = 0; k < W; k += 16) t -= (v16)(load16(p + k) == start1);
-            const auto sums = __builtin_ia32_psadbw128((c16)t, c16{});
+            for (std::size_t k = 0; k < W; k += 16) t -= reinterpret_cast<v16>(load16(p + k) == start1);
+            const auto sums = __builtin_ia32_psadbw128(reinterpret_cast<c16>(t), c16{});
             return static_cast<std::uint64_t>(sums[0] + sums[1]);
         }
 #endif
@@ -289,7 +289,7 @@ private:
     }
     template <class V>
     static unsigned mask16(V v) noexcept {  // bit k: lane k is all ones
-        return static_cast<unsigned>(__builtin_ia32_pmovmskb128((c16)v));
+        return static_cast<unsigned>(__builtin_ia32_pmovmskb128(reinterpret_cast<c16>(v)));
     }
     static v16 max16(v16 a, v16 b) noexcept { return a > b ? a : b; }
 #endif
