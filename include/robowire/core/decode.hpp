@@ -178,7 +178,10 @@ ROBOWIRE_COLD constexpr error fixed_or_field_error(const std::uint8_t* data, std
 template <class M, bool YesNo = true>
 ROBOWIRE_ALWAYS_INLINE constexpr bool check_input(in_bytes in, error& err) noexcept {
     constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
-    if constexpr (ROBOWIRE_OPTIMIZE_SIZE || !YesNo) {
+    if constexpr (unchecked_record<M>(fields)) {
+        (void)in, (void)err;
+        return true;
+    } else if constexpr (ROBOWIRE_OPTIMIZE_SIZE || !YesNo) {
         return check_record<M>(in, 0, err, fields);
     } else {
         error unread{};  // its stores are dead: dropped
@@ -402,7 +405,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool fixed_match(in_bytes in, std::index_sequen
 template <std::size_t Known, class M, class R>
 ROBOWIRE_ALWAYS_INLINE constexpr bool input_ok(R& r, in_bytes in) noexcept {
     constexpr std::size_t min = table_v<M>.min_size(), max = table_v<M>.max_input();
-    if constexpr (fixed_in_lanes_v<Known, M>) {  // the fixed bytes in check_input's vector test (at run time)
+    constexpr bool in_lanes = fixed_in_lanes_v<Known, M>;
+    if constexpr (in_lanes) {  // the fixed bytes in check_input's vector test (at run time)
         if (!ROBOWIRE_CONSTANT_EVALUATED()) {
             if (in.size() - min <= max - min) [[likely]]
                 return true;
@@ -410,7 +414,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool input_ok(R& r, in_bytes in) noexcept {
             return false;
         }
     }
-    if constexpr (fixed_within_min_v<Known, M> && !ROBOWIRE_OPTIMIZE_SIZE) {  // size: no cold function per message
+    if constexpr (!in_lanes && fixed_within_min_v<Known, M> &&
+                  !ROBOWIRE_OPTIMIZE_SIZE) {  // size: no cold function per message
         if (in.size() - min <= max - min && fixed_match<Known, M>(in, std::make_index_sequence<fixed_count_v<M>>{}))
             [[likely]]
             return true;

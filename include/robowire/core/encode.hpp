@@ -88,8 +88,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_fields(const M& m, error& err) noexc
     }
     if constexpr (ROBOWIRE_OPTIMIZE_SIZE) {
         return detail::check_record<M>(m, 0, err, fields);
-    } else {  // as one yes/no; which one failed, out of line: no error set up on the good path
-        detail::no_error ignore;
+    } else {             // as one yes/no; which one failed, out of line: no error set up on the good path
+        error ignore{};  // its stores are dead: dropped
 #if ROBOWIRE_SSE2
         if constexpr (detail::field_count_v<M> >= detail::lanes_min_fields) {
             if constexpr (detail::lanes_v<M, true>.use) {  // the one-byte fields' ranges as one vector test

@@ -196,18 +196,18 @@ struct message_table {
     constexpr std::size_t max_size() const noexcept {
         std::size_t e = declared_size;
         for (const auto& b : fixed) e = b.offset + 1 > e ? b.offset + 1 : e;
-        fields.each([&](const auto& f) { e = f.end() > e ? f.end() : e; });
+        fields.apply([&](const auto&... f) { ((e = f.end() > e ? f.end() : e), ...); });
         return e;
     }
     // Shortest valid input: fixed bytes and every non-optional field.
     constexpr std::size_t min_size() const noexcept {
         std::size_t e = declared_size;
         for (const auto& b : fixed) e = b.offset + 1 > e ? b.offset + 1 : e;
-        auto req = [&](const auto& f) {
-            const std::size_t end = f.kind == wire_kind::tail ? f.offset : f.end();
-            if (!f.is_optional && end > e) e = end;
+        const auto req = [&e](bool optional, std::size_t end) {
+            if (!optional && end > e) e = end;
         };
-        fields.each(req);
+        fields.apply(
+            [&](const auto&... f) { (req(f.is_optional, f.kind == wire_kind::tail ? f.offset : f.end()), ...); });
         return e;
     }
     // Longest accepted input (longer than max_size(): the rest is ignored).
@@ -260,9 +260,14 @@ constexpr std::array<bool, max_size_v<M>> reserved_bytes() noexcept {
     std::array<bool, max_size_v<M>> reserved{};
     reserved.fill(true);
     for (const auto& b : table_v<M>.fixed) reserved[b.offset] = false;
-    for_each_field<M>([&](const auto& f) {
-        for (std::size_t i = f.offset; i < f.end(); ++i) reserved[i] = false;
-    });
+    // the fields' byte ranges, as a fold (no function per field type)
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        const std::size_t from[] = {table_v<M>.fields.template get<I>().offset..., 0};
+        const std::size_t to[] = {table_v<M>.fields.template get<I>().end()..., 0};
+        for (std::size_t k = 0; k < sizeof...(I); ++k)
+            for (std::size_t i = from[k]; i < to[k]; ++i) reserved[i] = false;
+    }
+    (std::make_index_sequence<std::remove_cvref_t<decltype(table_v<M>)>::field_count>{});
     return reserved;
 }
 

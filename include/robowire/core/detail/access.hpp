@@ -123,7 +123,7 @@ inline constexpr bool plain_byte_array_v = [] {
         return false;
     } else {
         using E = typename S::element_type;
-        return Min == std::numeric_limits<E>::min() && Max == std::numeric_limits<E>::max();
+        return Min <= std::numeric_limits<E>::min() && Max >= std::numeric_limits<E>::max();
     }
 }();
 

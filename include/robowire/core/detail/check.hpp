@@ -55,6 +55,14 @@ constexpr bool aggregate_has_members() noexcept {
                !initialisable_with<M>(std::make_index_sequence<N + 1>{});
 }
 
+// The bits a one-byte bit field of type F takes in its byte; 0 for other fields.
+template <class F>
+inline constexpr unsigned bits_mask_v = [] {
+    if constexpr (F::kind == wire_kind::bits && F::count == 1)
+        return static_cast<unsigned>(low_mask(F::wire_type::width) << F::wire_type::lo);
+    else return 0u;
+}();
+
 // Checks a message or record table; returns it unchanged. MembersMatch:
 // every struct member is on the wire (a field) or declared as not on it
 // (members_not_on_wire), worked out by the caller from the same table.
@@ -65,25 +73,30 @@ constexpr const Table& checked_table(const Table& t, std::bool_constant<MembersM
     unsigned bits_used = 0;
     // Declared sizes bound every field and fixed byte.
     const std::size_t limit = t.declared_size ? t.declared_size : t.declared_max_input;
-    t.fields.each([&](const auto& f) {
-        using F = std::remove_cvref_t<decltype(f)>;
-        if (f.offset < prev_offset) table_fields_out_of_offset_order(t.name, f.name);
-        unsigned mask = 0;
-        if constexpr (F::kind == wire_kind::bits && F::count == 1)
-            mask = static_cast<unsigned>(low_mask(F::wire_type::width) << F::wire_type::lo);
-        if (mask != 0 && f.offset == bits_byte) {  // bit fields sharing a byte: their bits must not overlap
-            if ((bits_used & mask) != 0) table_fields_overlap(t.name, f.name);
-            bits_used |= mask;
-        } else {
-            if (f.offset < end) table_fields_overlap(t.name, f.name);
-            bits_byte = mask != 0 ? f.offset : static_cast<std::size_t>(-1);
-            bits_used = mask;
+    // one lambda over the fields as a pack (none per field type), then a loop
+    t.fields.apply([&](const auto&... fs) {
+        constexpr std::size_t n = sizeof...(fs);
+        const std::string_view name[] = {fs.name..., {}};
+        const std::size_t offset[] = {fs.offset..., 0};
+        const std::size_t end_of[] = {fs.end()..., 0};
+        const unsigned masks[] = {bits_mask_v<std::remove_cvref_t<decltype(fs)>>..., 0};
+        for (std::size_t i = 0; i < n; ++i) {
+            if (offset[i] < prev_offset) table_fields_out_of_offset_order(t.name, name[i]);
+            const unsigned mask = masks[i];
+            if (mask != 0 && offset[i] == bits_byte) {  // bit fields sharing a byte: their bits must not overlap
+                if ((bits_used & mask) != 0) table_fields_overlap(t.name, name[i]);
+                bits_used |= mask;
+            } else {
+                if (offset[i] < end) table_fields_overlap(t.name, name[i]);
+                bits_byte = mask != 0 ? offset[i] : static_cast<std::size_t>(-1);
+                bits_used = mask;
+            }
+            if (limit != 0 && end_of[i] > limit) table_field_beyond_message_size(t.name, name[i]);
+            for (const auto& b : t.fixed)
+                if (b.offset >= offset[i] && b.offset < end_of[i]) table_fixed_byte_under_field(t.name, name[i]);
+            prev_offset = offset[i];
+            if (end_of[i] > end) end = end_of[i];
         }
-        if (limit != 0 && f.end() > limit) table_field_beyond_message_size(t.name, f.name);
-        for (const auto& b : t.fixed)
-            if (b.offset >= f.offset && b.offset < f.end()) table_fixed_byte_under_field(t.name, f.name);
-        prev_offset = f.offset;
-        if (f.end() > end) end = f.end();
     });
     for (const auto& b : t.fixed) {
         if (limit != 0 && b.offset >= limit) table_fixed_byte_beyond_message_size(t.name, b.offset);

@@ -37,6 +37,9 @@ namespace robowire::detail::inline ROBOWIRE_MODE_NAMESPACE {
 
 // The error sink of a write pass whose input check_record passed.
 struct prechecked {};
+// The range a write pass steps with: none checked, one step per field shape.
+inline constexpr std::int64_t any_min = std::numeric_limits<std::int64_t>::min(),
+                              any_max = std::numeric_limits<std::int64_t>::max();
 // The same, into storage whose members are not initialised (see unset).
 struct prechecked_unset {};
 template <class Err>
@@ -246,7 +249,7 @@ ROBOWIRE_ALWAYS_INLINE void written(run& r, std::size_t end) noexcept {
 // A field at byte `wire`: joins the current run, starts one, or is decoded on
 // its own (P: prechecked, or prechecked_unset for unset storage).
 // avail: the input bytes a run may be widened into (flush_before; 0: none).
-template <class S, std::int64_t Min, std::int64_t Max, class P>
+template <class S, class P>
 ROBOWIRE_ALWAYS_INLINE void copy_or_decode(unsigned char* obj, typename S::member_type& member, in_bytes in,
                                            std::size_t wire, run& r, std::size_t avail = 0) noexcept {
     const std::size_t size = copy_size<S>(member);
@@ -265,7 +268,7 @@ ROBOWIRE_ALWAYS_INLINE void copy_or_decode(unsigned char* obj, typename S::membe
         written(r, mem + sizeof(member));
         r.size = 0;
         P none{};
-        (void)decode_field<S, Min, Max>(member, in, wire, none);
+        (void)decode_field<S, any_min, any_max>(member, in, wire, none);
     }
 }
 
@@ -275,7 +278,7 @@ template <class S, std::int64_t Min, std::int64_t Max, class Err>
 ROBOWIRE_ALWAYS_INLINE bool copy_or_check(unsigned char* obj, typename S::member_type& member, in_bytes in,
                                           std::size_t wire, run& r, Err& err) noexcept {
     if constexpr (unchecked_field<S, Min, Max>()) {
-        copy_or_decode<S, Min, Max, prechecked_t<Err>>(obj, member, in, wire, r);
+        copy_or_decode<S, prechecked_t<Err>>(obj, member, in, wire, r);
         return true;
     } else {
         flush(obj, in, r);
@@ -295,8 +298,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, in_bytes in, std::size
             // Runs widened only where every member is a field (no other member in a gap).
             constexpr std::size_t min = decode_writes_every_member_v<M> ? table_v<M>.min_size() : 0;
             const std::size_t avail = min != 0 ? base + min : 0;
-            (copy_or_decode<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max, Err>(
-                 obj, m.*(field_v<M, I>.member), in, base + field_v<M, I>.offset, r, avail),
+            (copy_or_decode<shape_t<M, I>, Err>(obj, m.*(field_v<M, I>.member), in, base + field_v<M, I>.offset, r,
+                                                avail),
              ...);
             flush(obj, in, r);
             return true;
@@ -313,9 +316,15 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool decode_record(M& m, in_bytes in, std::size
             return true;
         }
     }
-    return (decode_field<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(
-                m.*(field_v<M, I>.member), in, base + field_v<M, I>.offset, err) &&
-            ...);
+    if constexpr (!checks_v<Err>) {  // no range checked: one step per shape, whatever its range
+        return (decode_field<shape_t<M, I>, any_min, any_max>(m.*(field_v<M, I>.member), in,
+                                                              base + field_v<M, I>.offset, err) &&
+                ...);
+    } else {
+        return (decode_field<shape_t<M, I>, field_v<M, I>.valid.min, field_v<M, I>.valid.max>(
+                    m.*(field_v<M, I>.member), in, base + field_v<M, I>.offset, err) &&
+                ...);
+    }
 }
 
 template <class S, std::int64_t Min, std::int64_t Max, class E, class Err>
@@ -400,9 +409,17 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_field(in_bytes in, std::size_t off, 
         }
         if (in.size() <= off) return true;  // absent
     }
-    if constexpr (plain_byte_array_v<S, Min, Max>) return true;
-    else if constexpr (S::is_array) return check_array<S, Min, Max>(in, off, err, std::make_index_sequence<S::count>{});
-    else return check_element<S, Min, Max>(in, off, err);
+    using W = typename S::wire_type;
+    if constexpr (plain_byte_array_v<S, Min, Max>) {
+        return true;
+    } else if constexpr (S::is_array) {
+        return check_array<S, Min, Max>(in, off, err, std::make_index_sequence<S::count>{});
+    } else if constexpr (scalar_wire_v<W> && W::kind != wire_kind::f32le) {  // no step between
+        typename S::element_type unused{};                                   // the store is dead
+        return decode_scalar<W, Min, Max>(unused, in, off, err);
+    } else {
+        return check_element<S, Min, Max>(in, off, err);
+    }
 }
 template <class M, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE constexpr bool check_record(in_bytes in, std::size_t base, error& err,

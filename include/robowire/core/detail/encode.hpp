@@ -26,11 +26,6 @@ namespace robowire::detail::inline ROBOWIRE_MODE_NAMESPACE {
 // ---- encode, in two passes: check every field (the first error wins), then
 // write them all without a branch, so that the stores can merge.
 
-// An error report that keeps nothing: the checks as one yes/no (see encode_into).
-struct no_error {
-    constexpr no_error& operator=(const error&) noexcept { return *this; }
-};
-
 // Checks and stores of a number, enum, bool or float of wire type W, valid in
 // [Min, Max]: shared by every field of the same kind and range.
 template <class W, std::int64_t Min, std::int64_t Max, class E>
@@ -327,21 +322,31 @@ ROBOWIRE_ALWAYS_INLINE constexpr void write_fixed(out_bytes out, std::index_sequ
 }
 
 // Bytes that encoding sets to zero before writing the fields: reserved bytes
-// and bytes holding bit fields (those are or-ed in).
+// and bytes holding bit fields (those are or-ed in). A fold per message and
+// a step per field shape (no function per field type).
+template <class M, std::size_t... I>
+constexpr void mark_bit_bytes(bool* clear, std::size_t base, std::index_sequence<I...>) noexcept;
+template <class S>
+constexpr void mark_bit_bytes(bool* clear, std::size_t at) noexcept {
+    if constexpr (S::kind == wire_kind::bits) {
+        for (std::size_t k = 0; k < S::count; ++k) clear[at + k * S::element_size] = true;
+    } else if constexpr (S::kind == wire_kind::record) {
+        using E = typename S::element_type;
+        for (std::size_t k = 0; k < S::count; ++k)
+            mark_bit_bytes<E>(clear, at + k * S::element_size, std::make_index_sequence<field_count_v<E>>{});
+    } else {
+        (void)clear, (void)at;
+    }
+}
+template <class M, std::size_t... I>
+constexpr void mark_bit_bytes(bool* clear, std::size_t base, std::index_sequence<I...>) noexcept {
+    (void)clear, (void)base;
+    (mark_bit_bytes<shape_t<M, I>>(clear, base + field_v<M, I>.offset), ...);
+}
 template <class M>
 constexpr std::array<bool, max_size_v<M>> cleared_bytes() noexcept {
     auto clear = reserved_bytes<M>();
-    auto bits = [&](const auto& self, const auto& f, std::size_t base) -> void {
-        using F = std::remove_cvref_t<decltype(f)>;
-        for (std::size_t k = 0; k < F::count; ++k) {
-            if constexpr (F::kind == wire_kind::bits) clear[base + f.offset + k * F::element_size] = true;
-            else if constexpr (F::kind == wire_kind::record) {
-                using E = typename F::element_type;
-                table_v<E>.fields.each([&](const auto& g) { self(self, g, base + f.offset + k * F::element_size); });
-            }
-        }
-    };
-    for_each_field<M>([&](const auto& f) { bits(bits, f, 0); });
+    mark_bit_bytes<M>(clear.data(), 0, std::make_index_sequence<field_count_v<M>>{});
     return clear;
 }
 template <class M>

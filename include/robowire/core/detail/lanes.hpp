@@ -31,14 +31,14 @@ struct byte_lanes {
     std::size_t off = 0;  // wire offset
 };
 // What a field's shape S says: one-byte elements whose checks are a range
-// (the table's, within [tmin, tmax], the type they are checked in: the
-// member's for encode (Member), the wire's for decode; an enum's run of
+// (the table's, within the type they are checked in: [mmin, mmax] the
+// member's for encode, [wmin, wmax] the wire's for decode; an enum's run of
 // codes: fixed, in [lo, hi]).
 struct lane_shape {
     bool ok = false, fixed = false;
-    std::int64_t tmin = 0, tmax = 0, lo = 0, hi = 0;
+    std::int64_t mmin = 0, mmax = 0, wmin = 0, wmax = 0, lo = 0, hi = 0;
 };
-template <class S, bool Member>
+template <class S>
 constexpr lane_shape lane_shape_of() noexcept {
     using E = typename S::element_type;
     using W = typename S::wire_type;
@@ -54,23 +54,33 @@ constexpr lane_shape lane_shape_of() noexcept {
                               true,
                               std::numeric_limits<U>::min(),
                               std::numeric_limits<U>::max(),
+                              std::numeric_limits<U>::min(),
+                              std::numeric_limits<U>::max(),
                               enum_code_run_v<E>.lo,
                               enum_code_run_v<E>.hi};
     } else {
-        using T = std::conditional_t<Member, E, typename W::raw_type>;
-        return lane_shape{true, false, std::numeric_limits<T>::min(), std::numeric_limits<T>::max(), 0, 0};
+        using R = typename W::raw_type;
+        return lane_shape{true,
+                          false,
+                          std::numeric_limits<E>::min(),
+                          std::numeric_limits<E>::max(),
+                          std::numeric_limits<R>::min(),
+                          std::numeric_limits<R>::max(),
+                          0,
+                          0};
     }
 }
 // A field of that shape, valid in [min, max], at wire offset `off`, as lanes.
 template <class = void>  // compiled where used
-constexpr byte_lanes lanes_of(const lane_shape& s, std::int64_t min, std::int64_t max, std::size_t off,
+constexpr byte_lanes lanes_of(const lane_shape& s, bool member, std::int64_t min, std::int64_t max, std::size_t off,
                               std::size_t count) noexcept {
     if (!s.ok) return {};
-    std::int64_t lo = s.fixed ? s.lo : (min > s.tmin ? min : s.tmin);
-    std::int64_t hi = s.fixed ? s.hi : (max < s.tmax ? max : s.tmax);
-    if (!s.fixed && lo == s.tmin && hi == s.tmax) return {true, false, 0, 255, 0, off};  // no check
+    const std::int64_t tmin = member ? s.mmin : s.wmin, tmax = member ? s.mmax : s.wmax;
+    std::int64_t lo = s.fixed ? s.lo : (min > tmin ? min : tmin);
+    std::int64_t hi = s.fixed ? s.hi : (max < tmax ? max : tmax);
+    if (!s.fixed && lo == tmin && hi == tmax) return {true, false, 0, 255, 0, off};  // no check
     if (lo > hi) return {};
-    const unsigned each = lo == s.tmin || hi == s.tmax ? 2 : 4;  // one compare, or two
+    const unsigned each = lo == tmin || hi == tmax ? 2 : 4;  // one compare, or two
     return {true,
             true,
             static_cast<std::uint8_t>(lo),
@@ -249,9 +259,9 @@ constexpr lane_plan plan_lanes(const byte_lanes* f, const std::size_t* count, st
     }
     return p;
 }
-template <class M, bool Member, std::size_t... I>
-constexpr lane_plan plan_of(std::size_t limit, std::index_sequence<I...>) noexcept {
-    const byte_lanes f[] = {lanes_of(lane_shape_of<shape_t<M, I>, Member>(), field_v<M, I>.valid.min,
+template <class M, std::size_t... I>
+constexpr lane_plan plan_of(bool member, std::size_t limit, std::index_sequence<I...>) noexcept {
+    const byte_lanes f[] = {lanes_of(lane_shape_of<shape_t<M, I>>(), member, field_v<M, I>.valid.min,
                                      field_v<M, I>.valid.max, field_v<M, I>.offset, shape_t<M, I>::count)...};
     const std::size_t count[] = {shape_t<M, I>::count...};
     // a member that holds exactly its wire bytes: its size, else 0
@@ -260,16 +270,16 @@ constexpr lane_plan plan_of(std::size_t limit, std::index_sequence<I...>) noexce
         (!shape_t<M, I>::is_optional && sizeof(typename shape_t<M, I>::member_type) == shape_t<M, I>::size
              ? shape_t<M, I>::size
              : 0)...};
-    if constexpr (Member) return plan_lanes(f, count, sizeof...(I), limit, nullptr, 0, offs, flat);
-    else return plan_lanes(f, count, sizeof...(I), limit, table_v<M>.fixed.data(), fixed_count_v<M>);
+    if (member) return plan_lanes(f, count, sizeof...(I), limit, nullptr, 0, offs, flat);
+    return plan_lanes(f, count, sizeof...(I), limit, table_v<M>.fixed.data(), fixed_count_v<M>);
 }
 // M's plan: encode's (Member: the members, when their bytes lie as on the
 // wire, checked at run time) or decode's (the wire bytes; the shortest input
 // readable). Callers look at messages of three fields or more only (fewer
 // never pay for the test).
 template <class M, bool Member>
-inline constexpr lane_plan lanes_v = plan_of<M, Member>(Member ? 0 : min_size_v<M>,
-                                                        std::make_index_sequence<field_count_v<M>>{});
+inline constexpr lane_plan lanes_v = plan_of<M>(Member, Member ? 0 : min_size_v<M>,
+                                                std::make_index_sequence<field_count_v<M>>{});
 inline constexpr std::size_t lanes_min_fields = 3;
 
 // The indices below N that are not in Skip (bit k: index k), as an
@@ -363,18 +373,16 @@ ROBOWIRE_ALWAYS_INLINE bool lanes_test(lane_bytes x) noexcept {
     std::memcpy(&lim, P.lim, 16);
     return __builtin_ia32_pmovmskb128(reinterpret_cast<c16>(x + add) > lim) == 0;
 }
-template <const lane_plan& Plan, std::size_t W>
-ROBOWIRE_ALWAYS_INLINE bool lanes_valid(const unsigned char* a, const unsigned char* b) noexcept {
-    return lanes_test<Plan, W>(lanes_load<Plan, W>(a, b));
-}
 // Every test of P on the bytes at p + base + wire offset, its vector test
 // with window W (plan_fits).
 template <const lane_plan& P, std::size_t W = 0>
 ROBOWIRE_ALWAYS_INLINE bool plan_valid(const unsigned char* p, std::size_t base) noexcept {
     constexpr const lane_window& w = P.win[W];
     if constexpr (w.loads != 0)
-        if (!lanes_valid<P, W>(p + (base + w.at[0]), w.loads == 2 ? p + (base + w.at[1]) : nullptr)) return false;
-    return words_valid<P>(p, base, std::make_index_sequence<P.words>{});
+        if (!lanes_test<P, W>(lanes_load<P, W>(p + (base + w.at[0]), w.loads == 2 ? p + (base + w.at[1]) : nullptr)))
+            return false;
+    if constexpr (P.words != 0) return words_valid<P>(p, base, std::make_index_sequence<P.words>{});
+    return true;
 }
 // The window of P whose loads stay within an object of `size` bytes at
 // object offset base + wire offset (modulo 2^N): 0 or 1, else 2 (none).
