@@ -164,12 +164,16 @@ constexpr bool fixed_in_lanes() noexcept {
 }
 template <std::size_t Known, class M>
 inline constexpr bool fixed_in_lanes_v = fixed_in_lanes<Known, M>();
-// The first error of an input whose length is right: a fixed byte's, else a field's.
+// The first error of an input, for a message whose vector test holds its
+// fixed bytes (fixed_in_lanes_v): a fixed byte's, the length's, else a
+// field's. One cold function for both of its tests (input_ok's, check_input's).
 template <class M>
 ROBOWIRE_COLD constexpr error fixed_or_field_error(const std::uint8_t* data, std::size_t size) noexcept {
     const in_bytes in(data, size);
     if (const error e = fixed_error<M, no_offset>(in, std::make_index_sequence<fixed_count_v<M>>{}); e.code != errc::ok)
         return e;
+    if (size < min_size_v<M> || size > table_v<M>.max_input())
+        return length_error(size, min_size_v<M>, table_v<M>.max_input());
     return input_field_error<M>(data, size);
 }
 // The check pass: every field of `in` valid, else false with the first error
@@ -194,8 +198,8 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_input(in_bytes in, error& err) noexc
                         check_record<M>(in, 0, unread, kept_fields_t<lanes_v<M, false>.covered, field_count_v<M>>{}))
                         [[likely]]
                         return true;
-                    err = p.fixed_in ? fixed_or_field_error<M>(in.data(), in.size())
-                                     : input_field_error<M>(in.data(), in.size());
+                    if constexpr (p.fixed_in) err = fixed_or_field_error<M>(in.data(), in.size());
+                    else err = input_field_error<M>(in.data(), in.size());
                     return false;
                 }
             }
@@ -410,7 +414,7 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool input_ok(R& r, in_bytes in) noexcept {
         if (!ROBOWIRE_CONSTANT_EVALUATED()) {
             if (in.size() - min <= max - min) [[likely]]
                 return true;
-            r = input_error<Known, M>(in.data(), in.size());
+            r = fixed_or_field_error<M>(in.data(), in.size());
             return false;
         }
     }

@@ -6,7 +6,6 @@
 #include "config.hpp"  // first: the C++ version check
 
 #include <cstddef>
-#include <span>
 #include <string_view>
 #include <type_traits>
 
@@ -45,13 +44,31 @@ struct message_variants {
     static constexpr bool has_directions = !std::is_same_v<ToDevice, FromDevice>;
 };
 
+// A protocol's GATT characteristics: a view of a constant array (begin, end,
+// size, empty, [i]); `std::span(list.begin(), list.size())` makes a span.
+class characteristic_list {
+public:
+    constexpr characteristic_list() noexcept = default;
+    template <std::size_t N>
+    constexpr characteristic_list(const characteristic (&list)[N]) noexcept : first_(list), count_(N) {}
+    constexpr const characteristic* begin() const noexcept { return first_; }
+    constexpr const characteristic* end() const noexcept { return first_ + count_; }
+    constexpr std::size_t size() const noexcept { return count_; }
+    constexpr bool empty() const noexcept { return count_ == 0; }
+    constexpr const characteristic& operator[](std::size_t i) const noexcept { return first_[i]; }
+
+private:
+    const characteristic* first_ = nullptr;
+    std::size_t count_ = 0;
+};
+
 // One protocol: what the command-line tool, the log reader, the schema and
 // the Python module know of it. Including it computes nothing from the
 // tables (the fuzz dictionary is fuzz_dictionary_v<messages>, reflect.hpp).
 struct protocol_descriptor {
-    std::string_view name;                            // lower case, e.g. "osp"
-    std::string_view summary;                         // one line
-    std::span<const characteristic> characteristics;  // empty: no GATT (serial)
+    std::string_view name;                // lower case, e.g. "osp"
+    std::string_view summary;             // one line
+    characteristic_list characteristics;  // empty: no GATT (serial)
     stream_kind stream;
     bool has_directions;  // the messages differ by direction (message_variants)
 

@@ -152,7 +152,7 @@ constexpr error encode_into(const M& m, std::uint8_t* out_data, std::size_t out_
         }
     }
 #endif
-    const std::span<std::uint8_t> out(out_data, out_size);
+    const out_bytes out(out_data, out_size);  // (no std::span<std::uint8_t> built: less to compile)
     constexpr auto fields = std::make_index_sequence<field_count_v<M>>{};
     auto size = encoded_size(m, fields);
     if (!size) return codec::unchecked_error(size);

@@ -109,7 +109,7 @@ template <class Deferred = void>
 inline constexpr auto signed_offsets_v = make_signed_offsets<Deferred>();
 // Rewrites every i8 field of maneuver's table between the two encodings.
 template <bool ToSignMagnitude, class Deferred = void>
-constexpr void convert_signed(std::span<std::uint8_t> b) noexcept {
+constexpr void convert_signed(std::uint8_t* b) noexcept {  // a frame's frame_size bytes
     for (const std::uint8_t off : signed_offsets_v<Deferred>) {
         if constexpr (ToSignMagnitude) {  // to_sign_magnitude; -128 (in no channel's range) as 0x80
             const auto v = static_cast<std::int8_t>(b[off]);
@@ -128,7 +128,7 @@ template <class Deferred = void>
 [[nodiscard]] constexpr result<bytes<frame_size>> encode(const maneuver& m,
                                                          sign_encoding enc = sign_encoding::twos_complement) noexcept {
     auto r = robowire::encode(codec::deferred<Deferred>(m));
-    if (r && enc == sign_encoding::sign_magnitude) impl::convert_signed<true>(r->span());
+    if (r && enc == sign_encoding::sign_magnitude) impl::convert_signed<true>(r->data());
     return r;
 }
 
@@ -141,7 +141,7 @@ template <class Deferred = void>
         return codec::decode_at<maneuver>(codec::deferred<Deferred>(in).data(), in.size());
     std::array<std::uint8_t, frame_size> copy{};
     for (std::size_t i = 0; i < frame_size; ++i) copy[i] = in[i];
-    impl::convert_signed<false, Deferred>(copy);
+    impl::convert_signed<false, Deferred>(copy.data());
     return codec::decode_at<maneuver>(codec::deferred<Deferred>(copy).data(), copy.size());
 }
 }  // namespace ROBOWIRE_MODE_NAMESPACE
