@@ -211,35 +211,65 @@ bool valid_byte(std::size_t off, std::uint8_t v) {
 errc code_at(std::size_t off) { return off == 5 ? errc::invalid_enum : errc::value_out_of_range; }
 }  // namespace
 
+namespace {
+// encode_to into a buffer of n bytes filled with 0x5A: the frame `want`
+// (empty: the error e) and nothing written past it, or on an error.
+template <class M, std::size_t N>
+void check_encode_to(const M& m, const std::array<std::uint8_t, N>& want, bool ok, error e) {
+    for (const std::size_t n : {N - 1, N, N + 3}) {
+        std::array<std::uint8_t, N + 3> out{};
+        out.fill(0x5A);
+        const auto r = encode_to(m, std::span(out).first(n));
+        if (!ok) {
+            CHECK(r.error() == e);
+        } else if (n < N) {
+            CHECK(r.error() == error{errc::buffer_too_small, static_cast<std::uint16_t>(N)});
+        } else {
+            REQUIRE(r.has_value());
+            CHECK(*r == N);
+            CHECK(std::equal(want.begin(), want.end(), out.begin()));
+        }
+        for (std::size_t k = ok && n >= N ? N : 0; k < out.size(); ++k) CHECK(out[k] == 0x5A);
+    }
+}
+// Every value of the byte at each offset in `offs` (a member `delta` bytes
+// before it), decoded and encoded, against valid(off, byte) and the error
+// code at off.
+template <class M, std::size_t N, class Valid, class Code>
+void every_byte(const std::array<std::uint8_t, N>& good, const M& value, std::initializer_list<std::size_t> offs,
+                Valid valid, Code code, std::size_t delta = 1) {
+    REQUIRE(decode<M>(good).value() == value);
+    REQUIRE(encode(value).value() == bytes<N>::from(good).value());
+    check_encode_to(value, good, true, error{});
+    for (const std::size_t off : offs) {
+        for (unsigned v = 0; v < 256; ++v) {
+            INFO("offset " << off << " byte " << v);
+            auto in = good;
+            in[off] = static_cast<std::uint8_t>(v);
+            const bool ok = valid(off, static_cast<std::uint8_t>(v));
+            const auto r = decode<M>(in);
+            REQUIRE(r.has_value() == ok);
+            if (!ok) CHECK(r.error() == error{code(off), static_cast<std::uint16_t>(off)});
+            auto m = value;
+            std::memcpy(reinterpret_cast<unsigned char*>(&m) + off - delta, &in[off], 1);
+            const auto e = encode(m);
+            REQUIRE(e.has_value() == ok);
+            if (ok) CHECK(*e == bytes<N>::from(in).value());
+            else CHECK(e.error() == error{code(off), static_cast<std::uint16_t>(off)});
+            if (v % 16 == 0 || !ok) check_encode_to(m, in, ok, error{code(off), static_cast<std::uint16_t>(off)});
+        }
+    }
+}
+}  // namespace
+
 TEST_CASE("vector checks: every byte value of every one-byte field, decode and encode", "[core][vector]") {
     static_assert(sizeof(demo_vec::gauges) == 16);
 #if ROBOWIRE_SSE2 && !ROBOWIRE_OPTIMIZE_SIZE
     // The layout above has the vector test (decode and encode), else this file tests nothing new.
     static_assert(detail::lanes_v<demo_vec::gauges, false>.use && detail::lanes_v<demo_vec::gauges, true>.use);
 #endif
-    REQUIRE(decode<demo_vec::gauges>(good_frame).value() == good_value);
-    REQUIRE(encode(good_value).value() == bytes<16>::from(good_frame).value());
-    for (const std::size_t off : {3u, 4u, 5u, 6u, 7u, 8u, 9u, 10u, 11u, 12u, 15u}) {
-        for (unsigned v = 0; v < 256; ++v) {
-            INFO("offset " << off << " byte " << v);
-            auto in = good_frame;
-            in[off] = static_cast<std::uint8_t>(v);
-            const bool ok = valid_byte(off, static_cast<std::uint8_t>(v));
-            const auto r = decode<demo_vec::gauges>(in);
-            REQUIRE(r.has_value() == ok);
-            if (!ok) {
-                CHECK(r.error().code == code_at(off));
-                CHECK(r.error().offset == off);
-            }
-            // the same byte in the member (members lie as the wire bytes, one on)
-            auto m = good_value;
-            std::memcpy(reinterpret_cast<unsigned char*>(&m) + off - 1, &in[off], 1);
-            const auto e = encode(m);
-            REQUIRE(e.has_value() == ok);
-            if (ok) CHECK(*e == bytes<16>::from(in).value());
-            else CHECK(e.error() == error{code_at(off), static_cast<std::uint16_t>(off)});
-        }
-    }
+    // (members lie as the wire bytes, one on)
+    every_byte(good_frame, good_value, {3u, 4u, 5u, 6u, 7u, 8u, 9u, 10u, 11u, 12u, 15u}, valid_byte, code_at);
 }
 
 TEST_CASE("vector checks: the first error in table order wins", "[core][vector]") {
@@ -299,56 +329,6 @@ static_assert([] {
     return decode<demo_vec::gauges>(in).error() == error{errc::value_out_of_range, 9};
 }());
 
-namespace {
-// encode_to into a buffer of n bytes filled with 0x5A: the frame `want`
-// (empty: the error e) and nothing written past it, or on an error.
-template <class M, std::size_t N>
-void check_encode_to(const M& m, const std::array<std::uint8_t, N>& want, bool ok, error e) {
-    for (const std::size_t n : {N - 1, N, N + 3}) {
-        std::array<std::uint8_t, N + 3> out{};
-        out.fill(0x5A);
-        const auto r = encode_to(m, std::span(out).first(n));
-        if (!ok) {
-            CHECK(r.error() == e);
-        } else if (n < N) {
-            CHECK(r.error() == error{errc::buffer_too_small, static_cast<std::uint16_t>(N)});
-        } else {
-            REQUIRE(r.has_value());
-            CHECK(*r == N);
-            CHECK(std::equal(want.begin(), want.end(), out.begin()));
-        }
-        for (std::size_t k = ok && n >= N ? N : 0; k < out.size(); ++k) CHECK(out[k] == 0x5A);
-    }
-}
-// Every value of the byte at each offset in `offs` (a member `delta` bytes
-// before it), decoded and encoded, against valid(off, byte) and the error
-// code at off.
-template <class M, std::size_t N, class Valid, class Code>
-void every_byte(const std::array<std::uint8_t, N>& good, const M& value, std::initializer_list<std::size_t> offs,
-                Valid valid, Code code, std::size_t delta = 1) {
-    REQUIRE(decode<M>(good).value() == value);
-    REQUIRE(encode(value).value() == bytes<N>::from(good).value());
-    check_encode_to(value, good, true, error{});
-    for (const std::size_t off : offs) {
-        for (unsigned v = 0; v < 256; ++v) {
-            INFO("offset " << off << " byte " << v);
-            auto in = good;
-            in[off] = static_cast<std::uint8_t>(v);
-            const bool ok = valid(off, static_cast<std::uint8_t>(v));
-            const auto r = decode<M>(in);
-            REQUIRE(r.has_value() == ok);
-            if (!ok) CHECK(r.error() == error{code(off), static_cast<std::uint16_t>(off)});
-            auto m = value;
-            std::memcpy(reinterpret_cast<unsigned char*>(&m) + off - delta, &in[off], 1);
-            const auto e = encode(m);
-            REQUIRE(e.has_value() == ok);
-            if (ok) CHECK(*e == bytes<N>::from(in).value());
-            else CHECK(e.error() == error{code(off), static_cast<std::uint16_t>(off)});
-            if (v % 16 == 0 || !ok) check_encode_to(m, in, ok, error{code(off), static_cast<std::uint16_t>(off)});
-        }
-    }
-}
-}  // namespace
 
 TEST_CASE("vector checks: flag bytes as one word, a sparse enum, a load that ends at the struct's end",
           "[core][vector]") {

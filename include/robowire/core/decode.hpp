@@ -145,11 +145,8 @@ constexpr bool decoded_image_ok() noexcept {
 template <class M>
 ROBOWIRE_ALWAYS_INLINE bool members_from_first(const M& m) noexcept {
     constexpr std::size_t first = static_cast<std::size_t>(decoded_image_v<M>) + lanes_v<M, false>.win[0].at[0];
-    const auto obj = reinterpret_cast<const unsigned char*>(&m);
-    return [&]<std::size_t... I>(std::index_sequence<I...>) {
-        return ((offset_in(obj, &(m.*(field_v<M, I>.member))) + first == field_v<M, I>.offset) && ...);
-    }
-    (std::make_index_sequence<field_count_v<M>>{});
+    return members_as_wire<M, ~std::uint64_t{0}>(m, std::size_t{0} - first,
+                                                 std::make_index_sequence<field_count_v<M>>{});
 }
 #endif
 // Whether check_input's vector test checks M's fixed bytes (none known), so

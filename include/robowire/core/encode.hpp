@@ -40,7 +40,7 @@ ROBOWIRE_ALWAYS_INLINE std::size_t member_window(const M& m, std::size_t& base) 
     const auto obj = reinterpret_cast<const unsigned char*>(&m);
     base = offset_in(obj, &(m.*(field_v<M, p.anchor>.member))) - p.first;
     const std::size_t w = plan_fits(p, base, sizeof(M));
-    return w < 2 && members_as_wire<M, p>(m, base, std::make_index_sequence<field_count_v<M>>{}) ? w : 2;
+    return w < 2 && members_as_wire<M, p.mirror>(m, base, std::make_index_sequence<field_count_v<M>>{}) ? w : 2;
 }
 // The D offset of the output's first wire byte (image_of): 1 for a bytes<N>
 // (its size byte first), written through its object.
@@ -54,11 +54,7 @@ template <described M, std::size_t W, std::size_t Lead, class Written>
 ROBOWIRE_ALWAYS_INLINE error encode_image(const M& m, std::size_t base, std::uint8_t* out_data, std::size_t out_size,
                                           Written& written) noexcept {
     constexpr const lane_plan& p = lanes_v<M, true>;
-    constexpr const lane_window& win = p.win[W];
-    const auto obj = reinterpret_cast<const unsigned char*>(&m);
-    lane_bytes x;
-    if constexpr (win.loads == 2) x = lanes_load<p, W>(obj + (base + win.at[0]), obj + (base + win.at[1]));
-    else x = lanes_load<p, W>(obj + (base + win.at[0]), nullptr);
+    const lane_bytes x = lanes_load<p, W>(reinterpret_cast<const unsigned char*>(&m), base);
     if (!lanes_test<p, W>(x)) [[unlikely]]
         return field_error(m);
     if (max_size_v < M >> out_size) return codec::fail_at(errc::buffer_too_small, max_size_v<M>);

@@ -143,12 +143,13 @@ ROBOWIRE_ALWAYS_INLINE constexpr bool check_element(const E& v, std::size_t off,
 }
 
 #if ROBOWIRE_SSE2
-// Do the members of the fields in P.mirror lie as their wire bytes, `base`
-// bytes on (object offset = base + wire offset, modulo 2^N)?
-template <class M, const lane_plan& P, std::size_t... I>
+// Do the members of the fields in Mask (bit I: field I, below 64) lie as
+// their wire bytes, `base` bytes on (object offset = base + wire offset,
+// modulo 2^N)? (A constant once inlined.)
+template <class M, std::uint64_t Mask, std::size_t... I>
 ROBOWIRE_ALWAYS_INLINE bool members_as_wire(const M& m, std::size_t base, std::index_sequence<I...>) noexcept {
     const auto obj = reinterpret_cast<const unsigned char*>(&m);
-    return ((I >= 64 || (P.mirror >> (I % 64) & 1) == 0 ||
+    return ((I >= 64 || (Mask >> (I % 64) & 1) == 0 ||
              offset_in(obj, &(m.*(field_v<M, I>.member))) == base + field_v<M, I>.offset) &&
             ...);
 }

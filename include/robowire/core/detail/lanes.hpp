@@ -103,6 +103,10 @@ struct lane_window {
     // (add = 0x80 - lo, lim = width - 0x80); a lane with no test: add 0, lim 127
     alignas(16) std::uint8_t add[16] = {};
     alignas(16) std::int8_t lim[16] = {127, 127, 127, 127, 127, 127, 127, 127, 127, 127, 127, 127, 127, 127, 127, 127};
+    // Wire bytes the loads hold, from at[0] on.
+    constexpr std::size_t length() const noexcept {
+        return loads == 16 ? 16 : loads == 2 ? at[1] + tail - at[0] : loads == 1 ? 8 : 0;
+    }
 };
 struct lane_plan {
     bool use = false;
@@ -323,19 +327,21 @@ ROBOWIRE_ALWAYS_INLINE bool words_valid(const unsigned char* p, std::size_t base
 #pragma GCC diagnostic ignored "-Warray-bounds"
 #endif
 using lane_bytes = unsigned char __attribute__((vector_size(16)));  // SSE2 register, through vector types
-// Window W's lanes: the bytes at a (and b), lane k holding wire byte at[0] + k.
+// Window W's lanes from the bytes at p + base + its wire offsets: lane k
+// holding wire byte at[0] + k.
 template <const lane_plan& Plan, std::size_t W>
-ROBOWIRE_ALWAYS_INLINE lane_bytes lanes_load(const unsigned char* a, const unsigned char* b) noexcept {
+ROBOWIRE_ALWAYS_INLINE lane_bytes lanes_load(const unsigned char* p, std::size_t base) noexcept {
     constexpr const lane_window& P = Plan.win[W];
     using u64x2 = unsigned long long __attribute__((vector_size(16)));
+    const unsigned char* const a = p + (base + P.at[0]);
     lane_bytes x;
-    (void)b;
     if constexpr (P.loads == 16) {
         std::memcpy(&x, a, 16);
     } else {
         unsigned long long lo = 0, hi = 0;
         std::memcpy(&lo, a, 8);
         if constexpr (P.loads == 2) {  // the tail's bytes from lane 8 on (its load ends at the last byte)
+            const unsigned char* const b = p + (base + P.at[1]);
             constexpr unsigned drop = 8 * (P.tail - (P.at[1] + P.tail - P.at[0] - 8));
             if constexpr (P.tail == 2) {  // pinsrw
                 using u16x8 = unsigned short __attribute__((vector_size(16)));
@@ -379,8 +385,7 @@ template <const lane_plan& P, std::size_t W = 0>
 ROBOWIRE_ALWAYS_INLINE bool plan_valid(const unsigned char* p, std::size_t base) noexcept {
     constexpr const lane_window& w = P.win[W];
     if constexpr (w.loads != 0)
-        if (!lanes_test<P, W>(lanes_load<P, W>(p + (base + w.at[0]), w.loads == 2 ? p + (base + w.at[1]) : nullptr)))
-            return false;
+        if (!lanes_test<P, W>(lanes_load<P, W>(p, base))) return false;
     if constexpr (P.words != 0) return words_valid<P>(p, base, std::make_index_sequence<P.words>{});
     return true;
 }
@@ -424,7 +429,7 @@ constexpr frame_image image_of(const lane_plan& p, std::size_t w, std::size_t le
                                const fixed_byte* fixed, std::size_t fixed_n, std::size_t n) noexcept {
     frame_image r{};
     const lane_window& win = p.win[w];
-    const std::size_t len = win.loads == 2 ? win.at[1] + win.tail - win.at[0] : 8;  // lanes loaded
+    const std::size_t len = win.length();
     const std::size_t d_size = lead + size, f0 = lead + win.at[0];
     const bool all = n < 64 && p.covered == (std::uint64_t{1} << n) - 1;
     if (!p.use || !all || p.words != 0 || (win.loads != 1 && win.loads != 2) || d_size < 16 || d_size > 32 ||
@@ -502,7 +507,7 @@ constexpr int decoded_image(std::index_sequence<I...>) noexcept {
     const lane_window& w = p.win[0];
     constexpr std::size_t n = sizeof...(I);
     if (!p.use || p.words != 0 || n >= 64 || p.covered != (std::uint64_t{1} << n) - 1 || w.loads == 0) return -1;
-    const std::size_t len = w.loads == 16 ? 16 : w.loads == 2 ? w.at[1] + w.tail - w.at[0] : 8;
+    const std::size_t len = w.length();
     const std::size_t offs[] = {field_v<M, I>.offset...}, count[] = {shape_t<M, I>::count...};
     std::size_t first = offs[0];
     for (std::size_t i = 0; i < n; ++i) {
@@ -521,9 +526,7 @@ ROBOWIRE_ALWAYS_INLINE void store_decoded(unsigned char* to, const unsigned char
                                           std::index_sequence<J...>) noexcept {
     constexpr const lane_plan& p = lanes_v<M, false>;
     constexpr std::size_t down = static_cast<std::size_t>(decoded_image_v<M>);
-    lane_bytes x;
-    if constexpr (p.win[0].loads == 2) x = lanes_load<p, 0>(in + p.win[0].at[0], in + p.win[0].at[1]);
-    else x = lanes_load<p, 0>(in + p.win[0].at[0], nullptr);
+    const lane_bytes x = lanes_load<p, 0>(in, 0);
     const lane_bytes y = __builtin_shufflevector(x, lane_bytes{}, (J + down < 16 ? J + down : 16)...);  // psrldq
     std::memcpy(to, &y, 16);
 }
