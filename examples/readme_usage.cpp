@@ -7,7 +7,8 @@ int main() {
     auto frame = robowire::encode(osp::obp1::status{osp::obp1::state::charging, 0}).value();  // 10 bytes
     auto msg = osp::decode(frame);  // std::variant of every OSP message, or an error + offset
     if (!msg) {
-        std::printf("error: %s at byte %u\n", robowire::to_string(msg.code()).data(),
+        const std::string_view what = robowire::to_string(msg.code());
+        std::printf("error: %.*s at byte %u\n", static_cast<int>(what.size()), what.data(),
                     static_cast<unsigned>(msg.error().offset));
         return 1;
     }
